@@ -50,4 +50,10 @@ class InvalidArgumentError : public Error {
   using Error::Error;
 };
 
+// The operation is not supported by this implementation (e.g. driving a log playback).
+class NotSupportedError : public Error {
+ public:
+  using Error::Error;
+};
+
 }  // namespace rgnav

@@ -1,0 +1,100 @@
+// ClientConnection: the caller's side of one module object (DESIGN.md "Restarts are normal"):
+// resolves RGNav/<robot>/<Object> in the naming service, runs calls with timeouts, and on
+// TRANSIENT, COMM_FAILURE, TIMEOUT or OBJECT_NOT_EXIST re-resolves and retries with bounded
+// exponential backoff, then fails with ModuleUnavailableError naming the module and the call.
+#pragma once
+
+#include <omniORB4/CORBA.h>
+
+#include <atomic>
+#include <cstdint>
+#include <functional>
+#include <optional>
+#include <string>
+#include <type_traits>
+
+#include "clientlibs/common/ClientSettings.h"
+#include "core/common/Errors.h"
+
+namespace rgnav {
+
+enum class ConnectionState { Connected, Reconnecting, Down };
+const char* toString(ConnectionState state);
+
+// A module did not answer within the retry budget.
+class ModuleUnavailableError : public Error {
+ public:
+  using Error::Error;
+};
+
+// Whether a call may run twice without harm; only idempotent calls are retried after a
+// failure that may have reached the server.
+enum class Idempotence { Idempotent, NotIdempotent };
+
+class ClientConnection {
+ public:
+  ClientConnection(std::string objectName, ClientSettings settings);
+
+  // Calls op(object, generation) until it succeeds or the retry budget is spent. generation
+  // changes whenever the object reference was replaced, so callers can cache narrowed refs.
+  // IDL user exceptions of Common.idl become the matching rgnav::*Error.
+  void invoke(const char* operation, Idempotence idempotence,
+              const std::function<void(CORBA::Object_ptr, std::uint64_t generation)>& op);
+
+  ConnectionState state() const { return state_.load(); }
+  const std::string& objectName() const { return objectName_; }
+  std::uint64_t reconnects() const { return reconnects_.load(); }
+
+ private:
+  bool refresh();  // re-resolve the name; keeps the old reference if the naming service is away
+
+  std::string objectName_;
+  ClientSettings settings_;
+  CORBA::ORB_var orb_;
+  CORBA::Object_var object_;
+  std::uint64_t generation_ = 0;
+  std::atomic<ConnectionState> state_{ConnectionState::Reconnecting};
+  std::atomic<std::uint64_t> reconnects_{0};
+};
+
+// A connection with the reference narrowed to the IDL interface Iface. Not thread-safe: one
+// client object per thread.
+template <class Iface>
+class TypedConnection {
+ public:
+  using Ptr = typename Iface::_ptr_type;
+  using Var = typename Iface::_var_type;
+
+  TypedConnection(std::string objectName, ClientSettings settings)
+      : connection_(std::move(objectName), std::move(settings)) {}
+
+  template <class F>
+  auto call(const char* operation, F&& f, Idempotence idempotence = Idempotence::Idempotent) {
+    using R = std::invoke_result_t<F, Ptr>;
+    if constexpr (std::is_void_v<R>) {
+      connection_.invoke(operation, idempotence, [&](CORBA::Object_ptr obj, std::uint64_t gen) { f(typed(obj, gen)); });
+    } else {
+      std::optional<R> result;
+      connection_.invoke(operation, idempotence,
+                         [&](CORBA::Object_ptr obj, std::uint64_t gen) { result.emplace(f(typed(obj, gen))); });
+      return std::move(*result);
+    }
+  }
+
+  const ClientConnection& connection() const { return connection_; }
+
+ private:
+  Ptr typed(CORBA::Object_ptr obj, std::uint64_t generation) {
+    if (generation != generation_) {
+      typed_ = Iface::_unchecked_narrow(obj);
+      generation_ = generation;
+    }
+    return typed_.in();
+  }
+
+  ClientConnection connection_;
+  Var typed_;
+  std::uint64_t generation_ = 0;
+};
+
+}  // namespace rgnav

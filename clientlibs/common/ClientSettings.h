@@ -1,0 +1,25 @@
+// ClientSettings: where to find the naming service and how patiently to talk to modules.
+#pragma once
+
+#include <chrono>
+#include <string>
+
+namespace rgnav {
+
+struct ClientSettings {
+  std::string namingHost = "127.0.0.1";
+  int namingPort = 2809;
+  std::string robot = "tumbot";
+  std::chrono::milliseconds callTimeout{2000};     // one call, answer included
+  std::chrono::milliseconds connectTimeout{500};   // opening a connection
+  std::chrono::milliseconds retryBudget{15000};    // retries of one call, then the module is down
+  std::chrono::milliseconds backoffInitial{10};
+  std::chrono::milliseconds backoffMax{200};
+
+  // Defaults overridden by RGNAV_NAMING ("host:port") and RGNAV_ROBOT when set.
+  static ClientSettings fromEnvironment();
+  // Parses "host:port"; throws ConfigError.
+  void setNaming(const std::string& hostPort);
+};
+
+}  // namespace rgnav

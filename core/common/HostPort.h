@@ -1,0 +1,31 @@
+// HostPort: a "host:port" endpoint as written in options and config files.
+#pragma once
+
+#include <charconv>
+#include <string>
+
+#include "core/common/Errors.h"
+
+namespace rgnav {
+
+struct HostPort {
+  std::string host;
+  int port = 0;
+  std::string str() const { return host + ":" + std::to_string(port); }
+};
+
+// Parses "host:port" with a port in 1..65535; throws ConfigError naming the text.
+inline HostPort parseHostPort(const std::string& text) {
+  const auto colon = text.rfind(':');
+  int port = 0;
+  if (colon == std::string::npos || colon == 0)
+    throw ConfigError("'" + text + "' is not host:port");
+  const char* begin = text.data() + colon + 1;
+  const char* end = text.data() + text.size();
+  const auto [ptr, ec] = std::from_chars(begin, end, port);
+  if (ec != std::errc() || ptr != end || port < 1 || port > 65535)
+    throw ConfigError("'" + text + "' has no valid port (1..65535)");
+  return {text.substr(0, colon), port};
+}
+
+}  // namespace rgnav
