@@ -1,0 +1,56 @@
+// LogPlayback: replays a log (any LogSource) into the bounded scan and odometry buffers that a
+// Laser and a Base server serve by ID. Records are released by a ReplaySchedule: in real time
+// (scaled) by the wall time since the replay started, or, as fast as consumed, as far as the
+// consumers ask. Thread-safe: the Laser and Base servants share one playback.
+#pragma once
+
+#include <cstddef>
+#include <memory>
+#include <mutex>
+#include <optional>
+#include <string>
+
+#include "core/common/DataBuffer.h"
+#include "core/logs/LogSource.h"
+#include "core/logs/ReplaySchedule.h"
+
+namespace rgnav {
+
+class LogPlayback {
+ public:
+  // Reads the first record to anchor the schedule. Throws as the source does.
+  LogPlayback(std::unique_ptr<LogSource> source, ReplayMode mode, std::size_t bufferCapacity);
+
+  // Scans/readings with ID > afterId (at most maxCount) after releasing what is due at
+  // wallElapsed seconds since the replay started.
+  DataBatch<LaserScan> scansSince(DataId afterId, std::size_t maxCount, double wallElapsed);
+  DataBatch<OdometryReading> odometrySince(DataId afterId, std::size_t maxCount, double wallElapsed);
+  LaserScan scan(DataId id, double wallElapsed);
+  // Odometry interpolated at a stamp from the buffered readings; NotAvailableError outside them.
+  OdometryReading odometryAt(Timestamp stamp, double wallElapsed);
+
+  DataId latestScanId(double wallElapsed);
+  DataId latestOdometryId(double wallElapsed);
+  DataId oldestScanId() const;
+
+  LogStats stats() const;
+  // Why the replay ended early (a read error in the middle of the log), empty if it did not.
+  std::string readError() const;
+
+ private:
+  enum class Want { Scans, Odometry };
+  // Releases due records; in as-fast mode until the wanted buffer holds `wantedId`.
+  void release(double wallElapsed, Want want, DataId wantedId);
+  void pull();  // reads the next record into pending_ (or marks the end)
+  void endOfData();
+
+  mutable std::mutex mutex_;
+  std::unique_ptr<LogSource> source_;
+  std::optional<LogRecord> pending_;
+  std::optional<ReplaySchedule> schedule_;
+  DataBuffer<LaserScan> scans_;
+  DataBuffer<OdometryReading> odometry_;
+  std::string readError_;
+};
+
+}  // namespace rgnav

@@ -1,0 +1,26 @@
+// PlaybackClock: the wall-clock origin of a replay, kept in the module's state directory so that
+// a restarted playback server continues the replay where the log's clock stands instead of
+// starting the log over (real-time modes; irrelevant when replaying as fast as consumed).
+#pragma once
+
+#include <chrono>
+#include <string>
+
+namespace rgnav {
+
+class PlaybackClock {
+ public:
+  // Loads the origin from stateDir/replay-origin if it was written for the same log and mode;
+  // otherwise starts now and writes it (atomically). An empty stateDir keeps nothing.
+  PlaybackClock(const std::string& stateDir, const std::string& logPath, const std::string& mode);
+
+  // Wall seconds since the replay started.
+  double elapsed() const;
+  bool resumed() const { return resumed_; }
+
+ private:
+  std::chrono::system_clock::time_point origin_;
+  bool resumed_ = false;
+};
+
+}  // namespace rgnav

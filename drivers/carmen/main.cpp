@@ -1,0 +1,38 @@
+// rgnav-carmen-playback: serves a recorded log (CARMEN plain/.gz/.xz, or the Intel JSON pair)
+// as the Laser and Base modules, at real time, k times real time, or as fast as consumed.
+#include <iostream>
+
+#include "core/logs/OpenLog.h"
+#include "core/logs/ReplayMode.h"
+#include "drivers/carmen/PlaybackServants.h"
+
+namespace po = boost::program_options;
+
+int main(int argc, char** argv) {
+  std::string log, corrected, speed;
+  double maxRange = 80.0;
+  std::size_t buffer = 0;
+  std::uint32_t maxBatch = 0;
+  po::options_description options("Log playback options");
+  options.add_options()
+      ("log", po::value(&log)->required(), "log file: CARMEN (.log, .gz, .xz) or Intel JSON (.json[.xz])")
+      ("corrected", po::value(&corrected)->default_value(""), "Intel JSON only: the corrected-pose companion file")
+      ("speed", po::value(&speed)->default_value("realtime"), "realtime, x<k> (k times real time) or max (as fast as consumed)")
+      ("max-range", po::value(&maxRange)->default_value(80.0), "metres; beams at or beyond mean no return")
+      ("buffer", po::value(&buffer)->default_value(20000), "scans and odometry readings held for consumers")
+      ("max-batch", po::value(&maxBatch)->default_value(500), "most records one call returns");
+  return rgnav::runServer(argc, argv, options, [&](rgnav::ServerRuntime& runtime) {
+    rgnav::LogReaderOptions reader;
+    reader.maxRange = maxRange;
+    reader.correctedPosesPath = corrected;
+    const rgnav::ReplayMode mode = rgnav::parseReplayMode(speed);
+    auto shared = std::make_shared<rgnav::PlaybackShared>(
+        rgnav::openLog(log, reader), mode, buffer,
+        rgnav::PlaybackClock(runtime.server().stateDir, log, rgnav::formatReplayMode(mode)), maxBatch);
+    runtime.activate("Laser", new rgnav::PlaybackLaserImpl(runtime, shared));
+    runtime.activate("Base", new rgnav::PlaybackBaseImpl(runtime, shared));
+    std::cerr << "playback of " << log << " (" << rgnav::formatReplayMode(mode) << ")"
+              << (shared->clock.resumed() ? ", resumed" : "") << " serving on " << runtime.server().endpoint.str()
+              << std::endl;
+  });
+}

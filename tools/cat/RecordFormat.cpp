@@ -1,0 +1,36 @@
+// Text forms of records for rgnav-cat (see RecordFormat.h).
+#include "tools/cat/RecordFormat.h"
+
+#include <cmath>
+#include <cstdio>
+#include <limits>
+
+namespace rgnav {
+
+std::string formatScan(const LaserScan& scan) {
+  std::size_t valid = 0, noReturn = 0;
+  float lo = std::numeric_limits<float>::infinity(), hi = 0.0f;
+  for (float r : scan.ranges) {
+    if (std::isinf(r)) ++noReturn;
+    if (!std::isfinite(r)) continue;
+    ++valid;
+    lo = std::min(lo, r);
+    hi = std::max(hi, r);
+  }
+  if (valid == 0) lo = 0.0f;
+  char line[256];
+  std::snprintf(line, sizeof line, "scan %llu %.6f %zu %zu %zu %.3f %.3f %.4f %.4f %.4f",
+                static_cast<unsigned long long>(scan.id), scan.stamp, scan.ranges.size(), valid, noReturn, lo, hi,
+                scan.odometry.x, scan.odometry.y, scan.odometry.theta);
+  return line;
+}
+
+std::string formatOdometry(const OdometryReading& odometry) {
+  char line[192];
+  std::snprintf(line, sizeof line, "odom %llu %.6f %.4f %.4f %.4f %.4f %.4f", static_cast<unsigned long long>(odometry.id),
+                odometry.stamp, odometry.pose.x, odometry.pose.y, odometry.pose.theta, odometry.translationalVelocity,
+                odometry.rotationalVelocity);
+  return line;
+}
+
+}  // namespace rgnav
