@@ -42,10 +42,20 @@ const char* toString(ConnectionState state) {
   return "unknown";
 }
 
-ClientConnection::ClientConnection(std::string objectName, ClientSettings settings)
-    : objectName_(std::move(objectName)), settings_(std::move(settings)), orb_(CORBA::ORB::_duplicate(processOrb(settings_))) {}
+ClientConnection::ClientConnection(std::string objectName, ClientSettings settings, std::optional<HostPort> direct)
+    : objectName_(std::move(objectName)),
+      settings_(std::move(settings)),
+      direct_(std::move(direct)),
+      orb_(CORBA::ORB::_duplicate(processOrb(settings_))) {}
 
 bool ClientConnection::refresh() {
+  if (direct_) {
+    if (!CORBA::is_nil(object_)) return false;  // a corbaloc reference never changes
+    object_ = orb_->string_to_object(("corbaloc::" + direct_->str() + "/" + objectName_).c_str());
+    omniORB::setClientCallTimeout(object_, static_cast<CORBA::ULong>(settings_.callTimeout.count()));
+    ++generation_;
+    return true;
+  }
   try {
     CORBA::Object_var namingObj = orb_->string_to_object(
         ("corbaloc::" + settings_.namingHost + ":" + std::to_string(settings_.namingPort) + "/NameService").c_str());

@@ -15,6 +15,7 @@
 
 #include "clientlibs/common/ClientSettings.h"
 #include "core/common/Errors.h"
+#include "core/common/HostPort.h"
 
 namespace rgnav {
 
@@ -33,7 +34,10 @@ enum class Idempotence { Idempotent, NotIdempotent };
 
 class ClientConnection {
  public:
-  ClientConnection(std::string objectName, ClientSettings settings);
+  // Resolves objectName in the naming service, or, with a direct endpoint, reaches it as
+  // corbaloc::host:port/<objectName> without the naming service (for the watchdog, which may be
+  // the one that runs the naming service).
+  ClientConnection(std::string objectName, ClientSettings settings, std::optional<HostPort> direct = std::nullopt);
 
   // Calls op(object, generation) until it succeeds or the retry budget is spent. generation
   // changes whenever the object reference was replaced, so callers can cache narrowed refs.
@@ -50,6 +54,7 @@ class ClientConnection {
 
   std::string objectName_;
   ClientSettings settings_;
+  std::optional<HostPort> direct_;
   CORBA::ORB_var orb_;
   CORBA::Object_var object_;
   std::uint64_t generation_ = 0;
@@ -65,8 +70,8 @@ class TypedConnection {
   using Ptr = typename Iface::_ptr_type;
   using Var = typename Iface::_var_type;
 
-  TypedConnection(std::string objectName, ClientSettings settings)
-      : connection_(std::move(objectName), std::move(settings)) {}
+  TypedConnection(std::string objectName, ClientSettings settings, std::optional<HostPort> direct = std::nullopt)
+      : connection_(std::move(objectName), std::move(settings), std::move(direct)) {}
 
   template <class F>
   auto call(const char* operation, F&& f, Idempotence idempotence = Idempotence::Idempotent) {

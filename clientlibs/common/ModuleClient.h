@@ -11,8 +11,8 @@ namespace rgnav {
 template <class Iface>
 class ModuleClientOf {
  public:
-  ModuleClientOf(std::string objectName, ClientSettings settings)
-      : connection_(std::move(objectName), std::move(settings)) {}
+  ModuleClientOf(std::string objectName, ClientSettings settings, std::optional<HostPort> direct = std::nullopt)
+      : connection_(std::move(objectName), std::move(settings), std::move(direct)) {}
 
   void ping() {
     connection_.call("ping", [](typename Iface::_ptr_type m) { m->ping(); });

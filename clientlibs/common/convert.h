@@ -24,21 +24,22 @@ OdometryReading fromIdl(const RGNav::Odometry& o);
 RGNav::ModuleStatus toIdl(const ModuleStatusInfo& s);
 ModuleStatusInfo fromIdl(const RGNav::ModuleStatus& s);
 
-// Copies a core vector into an IDL sequence (and back) element by element.
-template <class Seq, class Vec>
-Seq toIdlSeq(const Vec& items) {
+// Copies a core vector into an IDL sequence (and back) element by element with `convert`
+// (pass a lambda calling toIdl / fromIdl where the element's overload is visible).
+template <class Seq, class Vec, class Convert>
+Seq toIdlSeq(const Vec& items, Convert convert) {
   Seq seq;
   seq.length(static_cast<CORBA::ULong>(items.size()));
   CORBA::ULong i = 0;
-  for (const auto& item : items) seq[i++] = toIdl(item);
+  for (const auto& item : items) seq[i++] = convert(item);
   return seq;
 }
 
-template <class Vec, class Seq>
-Vec fromIdlSeq(const Seq& seq) {
+template <class Vec, class Seq, class Convert>
+Vec fromIdlSeq(const Seq& seq, Convert convert) {
   Vec items;
   items.reserve(seq.length());
-  for (CORBA::ULong i = 0; i < seq.length(); ++i) items.push_back(fromIdl(seq[i]));
+  for (CORBA::ULong i = 0; i < seq.length(); ++i) items.push_back(convert(seq[i]));
   return items;
 }
 

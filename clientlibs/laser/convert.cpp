@@ -6,11 +6,11 @@
 namespace rgnav {
 
 RGNav::ScanBatch toIdl(const DataBatch<LaserScan>& batch) {
-  return RGNav::ScanBatch{toIdlSeq<RGNav::LaserScanSeq>(batch.records), batch.oldestId, batch.latestId, batch.endOfData};
+  return RGNav::ScanBatch{toIdlSeq<RGNav::LaserScanSeq>(batch.records, [](const LaserScan& r) { return toIdl(r); }), batch.oldestId, batch.latestId, batch.endOfData};
 }
 
 DataBatch<LaserScan> fromIdl(const RGNav::ScanBatch& batch) {
-  return DataBatch<LaserScan>{fromIdlSeq<std::vector<LaserScan>>(batch.scans), batch.oldestId, batch.latestId,
+  return DataBatch<LaserScan>{fromIdlSeq<std::vector<LaserScan>>(batch.scans, [](const RGNav::LaserScan& r) { return fromIdl(r); }), batch.oldestId, batch.latestId,
                               static_cast<bool>(batch.endOfData)};
 }
 

@@ -1,0 +1,28 @@
+// WatchdogClient: reads and controls the watchdog of one host's server set. It reaches the
+// watchdog directly at its fixed endpoint (corbaloc), because that watchdog may be the one that
+// runs the naming service.
+#pragma once
+
+#include <vector>
+
+#include "Watchdog.hh"
+#include "clientlibs/common/ModuleClient.h"
+#include "clientlibs/watchdog/WatchdogTypes.h"
+
+namespace rgnav {
+
+class WatchdogClient : public ModuleClientOf<RGNav::Watchdog> {
+ public:
+  WatchdogClient(const HostPort& endpoint, ClientSettings settings = ClientSettings::fromEnvironment());
+
+  std::vector<ModuleProcessInfo> modules();
+  // InvalidArgumentError for a module the set does not have.
+  ModuleProcessInfo describeModule(const std::string& name);
+  void stopModule(const std::string& name);
+  void startModule(const std::string& name);
+  void restartModule(const std::string& name);
+  std::vector<SupervisionEvent> eventsSince(std::uint64_t afterId, std::uint32_t maxCount);
+  void shutdownSet();
+};
+
+}  // namespace rgnav
