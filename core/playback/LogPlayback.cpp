@@ -72,7 +72,7 @@ OdometryReading LogPlayback::odometryAt(Timestamp stamp, double wallElapsed) {
   // As fast as consumed: read on until a reading at or after the stamp is held.
   for (;;) {
     const DataId before = odometry_.latestId();
-    if (!odometry_.records().empty() && odometry_.records().back().stamp >= stamp) break;
+    if (!odometry_.records().empty() && odometry_.records().back().stamp > stamp) break;
     release(wallElapsed, Want::Odometry, before + 1);
     if (odometry_.latestId() == before) break;
   }

@@ -1,0 +1,30 @@
+// openLog: reader choice by file name.
+#include "core/logs/OpenLog.h"
+
+#include <algorithm>
+#include <array>
+#include <cctype>
+#include <string_view>
+
+#include "core/logs/CarmenLogReader.h"
+#include "core/logs/IntelJsonLogReader.h"
+
+namespace rgnav {
+
+bool isJsonLogPath(const std::string& path) {
+  std::string lower(path);
+  std::transform(lower.begin(), lower.end(), lower.begin(),
+                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  constexpr std::array<std::string_view, 3> kEndings = {".json", ".json.gz", ".json.xz"};
+  return std::any_of(kEndings.begin(), kEndings.end(),
+                     [&](std::string_view ending) { return lower.ends_with(ending); });
+}
+
+std::unique_ptr<LogSource> openLog(const std::string& path, const LogReaderOptions& options) {
+  if (isJsonLogPath(path)) {
+    return std::make_unique<IntelJsonLogReader>(path, options);
+  }
+  return std::make_unique<CarmenLogReader>(path, options);
+}
+
+}  // namespace rgnav

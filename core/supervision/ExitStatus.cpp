@@ -1,0 +1,18 @@
+// Human-readable text of an exit status, for events and fatal reasons.
+#include "core/supervision/ExitStatus.h"
+
+namespace rgnav {
+
+std::string ExitStatus::describe() const {
+  switch (kind_) {
+    case Kind::Exited:
+      return "exited with code " + std::to_string(value_);
+    case Kind::Signaled:
+      return "killed by signal " + std::to_string(value_);
+    case Kind::Lost:
+      return "vanished (adopted process, status unknown)";
+  }
+  return "unknown exit";
+}
+
+}  // namespace rgnav

@@ -1,0 +1,42 @@
+// /proc/<pid>/stat parsing and the liveness test for adopted processes.
+#include "watchdog/ProcStat.h"
+
+#include <signal.h>
+
+#include <cerrno>
+#include <fstream>
+#include <iterator>
+#include <sstream>
+#include <string>
+
+#include "watchdog/ProcessError.h"
+
+namespace rgnav {
+
+std::optional<ProcStat> readProcStat(pid_t pid) {
+  const std::string path = "/proc/" + std::to_string(pid) + "/stat";
+  std::ifstream in(path);
+  if (!in) return std::nullopt;
+  const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  if (text.empty()) return std::nullopt;  // the process went away while we read
+  // Field 2 is "(comm)" and comm may contain spaces and ')': fields 3.. follow the last ')'.
+  const std::size_t close = text.rfind(')');
+  if (close == std::string::npos) throw ProcessError(path + ": no ')' after the command name");
+  std::istringstream fields(text.substr(close + 1));
+  ProcStat stat{};
+  fields >> stat.state;
+  std::string skipped;
+  for (int field = 4; field < 22; ++field) fields >> skipped;
+  fields >> stat.startTime;
+  if (!fields) throw ProcessError(path + ": too few fields");
+  return stat;
+}
+
+bool isProcessAlive(pid_t pid, std::uint64_t startTime) {
+  if (pid <= 0) return false;
+  if (kill(pid, 0) != 0 && errno != EPERM) return false;
+  const std::optional<ProcStat> stat = readProcStat(pid);
+  return stat && stat->state != 'Z' && stat->state != 'X' && stat->startTime == startTime;
+}
+
+}  // namespace rgnav

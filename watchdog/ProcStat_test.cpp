@@ -1,0 +1,75 @@
+// Tests /proc/<pid>/stat reading: start time identifies a process, odd command names parse,
+// zombies and missing processes are not alive.
+#include <cppunit/extensions/HelperMacros.h>
+#include <unistd.h>
+
+#include <filesystem>
+#include <limits>
+#include <thread>
+
+#include "watchdog/ChildProcess.h"
+#include "watchdog/ProcStat.h"
+#include "watchdog/testing/ProcessGuard.h"
+#include "watchdog/testing/TempDir.h"
+#include "watchdog/testing/Wait.h"
+
+using rgnav::ChildProcess;
+using rgnav::readProcStat;
+using rgnav::testing::ProcessGuard;
+using rgnav::testing::TempDir;
+
+class ProcStatTest : public CppUnit::TestFixture {
+  CPPUNIT_TEST_SUITE(ProcStatTest);
+  CPPUNIT_TEST(readsOwnProcess);
+  CPPUNIT_TEST(startTimeIsStableAndDiffersForNewProcess);
+  CPPUNIT_TEST(parsesCommandNameWithParenthesisAndSpace);
+  CPPUNIT_TEST(missingProcessIsNotAlive);
+  CPPUNIT_TEST(zombieIsNotAlive);
+  CPPUNIT_TEST_SUITE_END();
+
+  TempDir dir_;
+
+  ChildProcess startSleep(const std::string& program = "sleep") {
+    return ChildProcess::start({{program, "30"}, {}, "", dir_.file("log")});
+  }
+
+ public:
+  void readsOwnProcess() {
+    const std::optional<rgnav::ProcStat> self = readProcStat(getpid());
+    CPPUNIT_ASSERT(self);
+    CPPUNIT_ASSERT_EQUAL('R', self->state);
+    CPPUNIT_ASSERT(rgnav::isProcessAlive(getpid(), self->startTime));
+  }
+  void startTimeIsStableAndDiffersForNewProcess() {
+    ChildProcess first = startSleep();
+    ProcessGuard firstGuard(first.pid(), first.startTime());
+    CPPUNIT_ASSERT_EQUAL(first.startTime(), readProcStat(first.pid())->startTime);
+    CPPUNIT_ASSERT_EQUAL(first.startTime(), readProcStat(first.pid())->startTime);
+    // Start times count clock ticks: let two ticks pass so the next process cannot share one.
+    std::this_thread::sleep_for(std::chrono::milliseconds(2 * 1000 / sysconf(_SC_CLK_TCK) + 1));
+    ChildProcess second = startSleep();
+    ProcessGuard secondGuard(second.pid(), second.startTime());
+    CPPUNIT_ASSERT(first.startTime() < second.startTime());
+    CPPUNIT_ASSERT(!rgnav::isProcessAlive(first.pid(), second.startTime()));
+  }
+  void parsesCommandNameWithParenthesisAndSpace() {
+    const std::string program = dir_.file("we) ird (x");
+    std::filesystem::copy_file("/bin/sleep", program);
+    ChildProcess p = startSleep(program);
+    ProcessGuard guard(p.pid(), p.startTime());
+    rgnav::testing::waitUntil([&] { return readProcStat(p.pid())->state == 'S'; }, "the program to sleep");
+    CPPUNIT_ASSERT(rgnav::isProcessAlive(p.pid(), p.startTime()));
+  }
+  void missingProcessIsNotAlive() {
+    const pid_t impossible = std::numeric_limits<pid_t>::max();
+    CPPUNIT_ASSERT(!readProcStat(impossible));
+    CPPUNIT_ASSERT(!rgnav::isProcessAlive(impossible, 0));
+  }
+  void zombieIsNotAlive() {
+    ChildProcess p = ChildProcess::start({{"/bin/true"}, {}, "", dir_.file("log")});
+    ProcessGuard guard(p.pid(), p.startTime());  // reaps the zombie at the end
+    rgnav::testing::waitUntil([&] { return readProcStat(p.pid())->state == 'Z'; }, "a zombie");
+    CPPUNIT_ASSERT(!rgnav::isProcessAlive(p.pid(), p.startTime()));
+  }
+};
+CPPUNIT_TEST_SUITE_REGISTRATION(ProcStatTest);
