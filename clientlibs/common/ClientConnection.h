@@ -7,6 +7,7 @@
 #include <omniORB4/CORBA.h>
 
 #include <atomic>
+#include <chrono>
 #include <cstdint>
 #include <functional>
 #include <optional>
@@ -47,6 +48,7 @@ class ClientConnection {
 
   ConnectionState state() const { return state_.load(); }
   const std::string& objectName() const { return objectName_; }
+  std::chrono::milliseconds callTimeout() const { return settings_.callTimeout; }
   std::uint64_t reconnects() const { return reconnects_.load(); }
 
  private:
@@ -91,7 +93,9 @@ class TypedConnection {
  private:
   Ptr typed(CORBA::Object_ptr obj, std::uint64_t generation) {
     if (generation != generation_) {
+      // Timeouts belong to one object reference, so the narrowed one needs its own.
       typed_ = Iface::_unchecked_narrow(obj);
+      omniORB::setClientCallTimeout(typed_.in(), static_cast<CORBA::ULong>(connection_.callTimeout().count()));
       generation_ = generation;
     }
     return typed_.in();

@@ -31,8 +31,8 @@ struct NamingConfig {
 
 struct WatchdogConfig {
   int port = 0;
-  std::chrono::nanoseconds heartbeatPeriod = std::chrono::milliseconds(200);
-  std::chrono::nanoseconds heartbeatTimeout = std::chrono::milliseconds(300);
+  std::chrono::nanoseconds heartbeatPeriod = std::chrono::milliseconds(100);
+  std::chrono::nanoseconds heartbeatTimeout = std::chrono::milliseconds(250);
   int hangMisses = 2;  // consecutive missed pings before a module counts as hung
 };
 

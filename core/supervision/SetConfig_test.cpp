@@ -141,8 +141,8 @@ modules: [{name: A, command: [a], port: 12811, objects: [A]}]
     CPPUNIT_ASSERT_EQUAL(std::string("tumbot"), set.robot);
     CPPUNIT_ASSERT_EQUAL(std::string("/base/run/intel"), set.runDir);
     CPPUNIT_ASSERT(!set.naming.managed);
-    CPPUNIT_ASSERT(set.watchdog.heartbeatPeriod == 200ms);
-    CPPUNIT_ASSERT(set.watchdog.heartbeatTimeout == 300ms);
+    CPPUNIT_ASSERT(set.watchdog.heartbeatPeriod == 100ms);
+    CPPUNIT_ASSERT(set.watchdog.heartbeatTimeout == 250ms);
     CPPUNIT_ASSERT_EQUAL(2, set.watchdog.hangMisses);
     const rgnav::ModulePolicy& p = set.modules[0].policy;
     CPPUNIT_ASSERT(p.restart == RestartPolicy::Permanent);

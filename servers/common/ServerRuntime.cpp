@@ -103,12 +103,13 @@ ClientSettings ServerRuntime::clientSettings() const {
   return settings;
 }
 
-void ServerRuntime::activate(const std::string& objectName, PortableServer::ServantBase* servant) {
-  PortableServer::ObjectId_var id = PortableServer::string_to_ObjectId(objectName.c_str());
+void ServerRuntime::activate(const std::string& objectId, PortableServer::ServantBase* servant,
+                             const std::string& boundName) {
+  PortableServer::ObjectId_var id = PortableServer::string_to_ObjectId(objectId.c_str());
   poa_->activate_object_with_id(id, servant);
   servant->_remove_ref();
   CORBA::Object_var ref = poa_->id_to_reference(id);
-  objects_.emplace_back(objectName, ref);
+  objects_.emplace_back(boundName.empty() ? objectId : boundName, ref);
 }
 
 bool ServerRuntime::registerAll() {
@@ -188,6 +189,7 @@ int ServerRuntime::run() {
   }
   health_.setState(ModuleRunState::Stopping);
   registrar_.join();
+  for (auto& hook : shutdownHooks_) hook();
   unregisterAll();
   return 0;
 }

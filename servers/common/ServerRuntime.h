@@ -47,8 +47,11 @@ class ServerRuntime {
   ClientSettings clientSettings() const;
 
   // Activates a servant (created with new; the POA takes ownership) under the fixed object ID
-  // objectName and registers it.
-  void activate(const std::string& objectName, PortableServer::ServantBase* servant);
+  // objectId and registers it as RGNav/<robot>/<boundName> (boundName defaults to objectId).
+  void activate(const std::string& objectId, PortableServer::ServantBase* servant, const std::string& boundName = "");
+
+  // Runs `hook` once serving has stopped, before the names are unbound.
+  void onShutdown(std::function<void()> hook) { shutdownHooks_.push_back(std::move(hook)); }
 
   // Serves until SIGTERM/SIGINT or requestShutdown(); unbinds the names; returns 0.
   int run();
@@ -64,7 +67,8 @@ class ServerRuntime {
   ModuleHealth health_;
   CORBA::ORB_var orb_;
   PortableServer::POA_var poa_;
-  std::vector<std::pair<std::string, CORBA::Object_var>> objects_;
+  std::vector<std::pair<std::string, CORBA::Object_var>> objects_;  // bound name, reference
+  std::vector<std::function<void()>> shutdownHooks_;
 
   std::mutex mutex_;
   std::condition_variable wake_;
