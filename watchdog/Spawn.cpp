@@ -5,6 +5,7 @@
 
 #include <fcntl.h>
 #include <signal.h>
+#include <sys/prctl.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -68,6 +69,7 @@ struct ChildSetup {
   int stdinFd;
   int logFd;
   int reportFd;
+  int parentDeathSignal;
   struct sigaction defaultAction;
 };
 
@@ -80,6 +82,7 @@ struct ChildSetup {
 
 [[noreturn]] void runChild(const ChildSetup& s) {
   setpgid(0, 0);
+  if (s.parentDeathSignal != 0) prctl(PR_SET_PDEATHSIG, s.parentDeathSignal);
   sigset_t none;
   sigemptyset(&none);
   sigprocmask(SIG_SETMASK, &none, nullptr);
@@ -121,7 +124,7 @@ pid_t spawnProcess(const SpawnSpec& spec) {
   UniqueFd writeEnd = aboveStdio(UniqueFd(ends[1]));
 
   ChildSetup setup{argv.data(), envp.data(), spec.cwd.empty() ? nullptr : spec.cwd.c_str(),
-                   devNull.get(), log.get(), writeEnd.get(), {}};
+                   devNull.get(), log.get(), writeEnd.get(), spec.parentDeathSignal, {}};
   setup.defaultAction.sa_handler = SIG_DFL;
   sigemptyset(&setup.defaultAction.sa_mask);
 

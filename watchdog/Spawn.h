@@ -15,6 +15,7 @@ struct SpawnSpec {
   std::map<std::string, std::string> env;  // added to (or replacing) the watchdog's environment
   std::string cwd;                         // empty: the watchdog's working directory
   std::string logFile;                     // created if missing, always appended to
+  int parentDeathSignal = 0;               // if set: sent to the child when the spawning thread dies
 };
 
 // Returns the PID; the process leads its own process group (pgid == pid). Throws

@@ -1,0 +1,195 @@
+// rgnav-faulttest: fault injection on a full log replay through the real server set (omniNames
+// + watchdog + log playback + rgnav-cat as consumer). While the log plays, the playback server
+// is SIGKILLed and SIGSTOPped many times and omniNames is killed once; a second module that
+// crashes at every start must end FATAL while the others keep running. The consumer must
+// receive every scan exactly once and in order. Last line:
+//   faults: kills=50 stops=5 recovered=55 scans_expected=910 scans_received=910 duplicates=0 ...
+// Exit code 0 only if every check held.
+#include <signal.h>
+#include <sys/wait.h>
+
+#include <algorithm>
+#include <boost/program_options.hpp>
+#include <cstdio>
+#include <fstream>
+#include <iostream>
+#include <random>
+#include <sstream>
+#include <thread>
+
+#include "core/logs/OpenLog.h"
+#include "core/logs/ReplayMode.h"
+#include "tests/support/cluster/TestCluster.h"
+#include "watchdog/Spawn.h"
+
+namespace po = boost::program_options;
+using namespace rgnav;
+using namespace rgnav::testing;
+using Clock = std::chrono::steady_clock;
+
+namespace {
+
+struct Options {
+  int kills = 50;
+  int stops = 5;
+  std::string log;
+  std::string speed = "x60";
+  unsigned seed = 7;
+};
+
+std::size_t scansInLog(const std::string& path) {
+  auto source = openLog(path);
+  std::size_t scans = 0;
+  while (auto record = source->next()) scans += std::holds_alternative<LaserScan>(*record);
+  return scans;
+}
+
+double logSeconds(const std::string& path) {
+  auto source = openLog(path);
+  double first = -1, last = 0;
+  while (auto record = source->next())
+    if (const auto* scan = std::get_if<LaserScan>(&*record)) {
+      if (first < 0) first = scan->stamp;
+      last = scan->stamp;
+    }
+  return last - first;
+}
+
+// IDs the consumer recorded, in arrival order.
+std::vector<DataId> recordedIds(const std::string& file) {
+  std::vector<DataId> ids;
+  std::ifstream in(file);
+  std::string kind;
+  DataId id;
+  std::string rest;
+  while (in >> kind >> id && std::getline(in, rest)) ids.push_back(id);
+  return ids;
+}
+
+double percentile(std::vector<double> values, double p) {
+  if (values.empty()) return 0;
+  std::sort(values.begin(), values.end());
+  return values[std::min(values.size() - 1, static_cast<std::size_t>(p * (values.size() - 1) + 0.5))];
+}
+
+bool running(const ModuleProcessInfo& m) { return m.state == ProcessState::Running; }
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  Options options;
+  options.log = TestCluster::shared("data/laser/corrected/intel-corrected.log.gz");
+  po::options_description desc("rgnav-faulttest [options]");
+  desc.add_options()
+      ("help", "this text")
+      ("kills", po::value(&options.kills)->default_value(options.kills), "SIGKILLs of the playback server")
+      ("stops", po::value(&options.stops)->default_value(options.stops), "SIGSTOPs of the playback server")
+      ("log", po::value(&options.log)->default_value(options.log), "log to replay")
+      ("speed", po::value(&options.speed)->default_value(options.speed), "replay speed (x<k> or realtime)")
+      ("seed", po::value(&options.seed)->default_value(options.seed), "seed for the fault schedule");
+  try {
+    po::variables_map vm;
+    po::store(po::parse_command_line(argc, argv, desc), vm);
+    if (vm.count("help")) {
+      std::cout << desc << std::endl;
+      return 0;
+    }
+    po::notify(vm);
+
+    const std::size_t expected = scansInLog(options.log);
+    const double replaySeconds = logSeconds(options.log) / parseReplayMode(options.speed).speed;
+    TestCluster cluster(
+        {{"LogPlayback",
+          {TestCluster::program("rgnav-carmen-playback"), "--log", options.log, "--speed", options.speed},
+          {"Laser", "Base"}, {}, "max_restarts: 1000"},
+         {"CrashAtStart",
+          {TestCluster::program("rgnav-carmen-playback"), "--log", "/nonexistent/crash-at-start.log"},
+          {"CrashLaser"}, {}, "max_restarts: 3"}},
+        "defaults: {backoff_initial_s: 0.05, backoff_max_s: 0.4}");
+    cluster.start({"LogPlayback"});
+
+    SpawnSpec consumer;
+    consumer.argv = {TestCluster::program("rgnav-cat"), "laser", "--quiet", "--record", cluster.dir() + "/received.txt",
+                     "--naming", "127.0.0.1:" + std::to_string(cluster.namingPort()), "--retry-budget-ms", "30000"};
+    consumer.logFile = cluster.dir() + "/consumer.log";
+    consumer.parentDeathSignal = SIGTERM;
+    const pid_t consumerPid = spawnProcess(consumer);
+
+    // Faults spread over 85 % of the replay, in a seeded order; omniNames dies half way.
+    std::vector<int> faults(static_cast<std::size_t>(options.kills), SIGKILL);
+    faults.insert(faults.end(), static_cast<std::size_t>(options.stops), SIGSTOP);
+    std::shuffle(faults.begin(), faults.end(), std::mt19937(options.seed));
+    const auto interval = std::chrono::duration<double>(0.85 * replaySeconds / double(faults.size() + 1));
+    const auto begin = Clock::now();
+    int kills = 0, stops = 0, recovered = 0, namingRestarts = 0;
+    std::vector<double> recovery;
+    for (std::size_t i = 0; i < faults.size(); ++i) {
+      std::this_thread::sleep_until(begin + std::chrono::duration_cast<Clock::duration>(interval * double(i + 1)));
+      if (i == faults.size() / 2) {
+        const auto naming = cluster.waitFor("NameService", running, "running");
+        ::kill(static_cast<pid_t>(naming.pid), SIGKILL);
+        cluster.waitFor("NameService", [&](const ModuleProcessInfo& m) { return running(m) && m.pid != naming.pid; },
+                        "restarted");
+        ++namingRestarts;
+      }
+      const auto victim = cluster.waitFor("LogPlayback", running, "running");
+      const auto hit = Clock::now();
+      ::kill(static_cast<pid_t>(victim.pid), faults[i]);
+      (faults[i] == SIGKILL ? kills : stops)++;
+      cluster.waitFor("LogPlayback", [&](const ModuleProcessInfo& m) { return running(m) && m.pid != victim.pid; },
+                      "restarted");
+      recovery.push_back(std::chrono::duration<double>(Clock::now() - hit).count());
+      ++recovered;
+    }
+
+    int status = 0;
+    const auto giveUp = Clock::now() + std::chrono::duration<double>(replaySeconds + 120);
+    while (::waitpid(consumerPid, &status, WNOHANG) == 0) {
+      if (Clock::now() > giveUp) {
+        ::kill(consumerPid, SIGKILL);
+        ::waitpid(consumerPid, &status, 0);
+        std::cerr << "consumer did not finish" << std::endl;
+        break;
+      }
+      std::this_thread::sleep_for(std::chrono::milliseconds(50));
+    }
+
+    const std::vector<DataId> ids = recordedIds(cluster.dir() + "/received.txt");
+    std::size_t duplicates = 0, outOfOrder = 0;
+    std::vector<int> seen(expected + 2, 0);
+    for (std::size_t i = 0; i < ids.size(); ++i) {
+      if (ids[i] < seen.size() && seen[ids[i]]++) ++duplicates;
+      if (i > 0 && ids[i] <= ids[i - 1]) ++outOfOrder;
+    }
+    const std::size_t distinct = std::count_if(seen.begin(), seen.end(), [](int n) { return n > 0; });
+    const auto crash = cluster.describe("CrashAtStart");
+    const auto playback = cluster.describe("LogPlayback");
+    const auto naming = cluster.describe("NameService");
+    const bool othersRun = running(playback) && running(naming);
+    const bool everyFaultRestarted = playback.restarts == static_cast<std::uint32_t>(kills + stops);
+
+    std::cout << "consumer: " << [&] {
+      std::ifstream in(cluster.dir() + "/consumer.log");
+      std::string line, last;
+      while (std::getline(in, line)) last = line;
+      return last;
+    }() << "\n";
+    std::cout << "CrashAtStart: " << toString(crash.state) << " after " << crash.restarts
+              << " restarts (" << crash.lastEvent << ")\n";
+    std::cout << "LogPlayback: " << toString(playback.state) << ", restarts=" << playback.restarts
+              << "; NameService: " << toString(naming.state) << ", restarts=" << naming.restarts << "\n";
+    const bool ok = WIFEXITED(status) && WEXITSTATUS(status) == 0 && ids.size() == expected && distinct == expected &&
+                    duplicates == 0 && outOfOrder == 0 && recovered == kills + stops &&
+                    crash.state == ProcessState::Fatal && othersRun && everyFaultRestarted && namingRestarts == 1;
+    std::printf("faults: kills=%d stops=%d recovered=%d scans_expected=%zu scans_received=%zu duplicates=%zu "
+                "out_of_order=%zu naming_restarts=%d crash_at_start=%s recovery_p95_s=%.3f result=%s\n",
+                kills, stops, recovered, expected, ids.size(), duplicates, outOfOrder, namingRestarts,
+                toString(crash.state), percentile(recovery, 0.95), ok ? "PASS" : "FAIL");
+    return ok ? 0 : 1;
+  } catch (const po::error& e) {
+    std::cerr << "rgnav-faulttest: " << e.what() << "\n" << desc << std::endl;
+  } catch (const std::exception& e) {
+    std::cerr << "rgnav-faulttest: " << e.what() << std::endl;
+  }
+  return 2;
+}
