@@ -69,6 +69,9 @@ int main(int argc, char** argv) {
     return rgnav::runServer(static_cast<int>(runtimeArgv.size()), runtimeArgv.data(), {}, [&](rgnav::ServerRuntime& runtime) {
       const auto timeout =
           std::chrono::duration_cast<std::chrono::milliseconds>(config.watchdog.heartbeatTimeout);
+      // A call that opens a connection is bounded by the connect timeout instead of its own, so
+      // a probe that reconnects to a hung module must not wait longer than a heartbeat.
+      omniORB::setClientConnectTimeout(static_cast<CORBA::ULong>(timeout.count()));
       auto set = std::make_shared<rgnav::SupervisedSet>(
           config, [&runtime, timeout](const rgnav::ModuleSpec& module, const rgnav::HostPort& at) {
             auto probe = std::make_shared<rgnav::LivenessProbe>(runtime.orb(), at, module.objects.front(), timeout);

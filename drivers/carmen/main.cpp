@@ -9,7 +9,7 @@
 namespace po = boost::program_options;
 
 int main(int argc, char** argv) {
-  std::string log, corrected, speed;
+  std::string log, corrected, speed, laserObject, baseObject;
   double maxRange = 80.0;
   std::size_t buffer = 0;
   std::uint32_t maxBatch = 0;
@@ -20,7 +20,9 @@ int main(int argc, char** argv) {
       ("speed", po::value(&speed)->default_value("realtime"), "realtime, x<k> (k times real time) or max (as fast as consumed)")
       ("max-range", po::value(&maxRange)->default_value(80.0), "metres; beams at or beyond mean no return")
       ("buffer", po::value(&buffer)->default_value(20000), "scans and odometry readings held for consumers")
-      ("max-batch", po::value(&maxBatch)->default_value(500), "most records one call returns");
+      ("max-batch", po::value(&maxBatch)->default_value(500), "most records one call returns")
+      ("laser-object", po::value(&laserObject)->default_value("Laser"), "object name of the Laser interface")
+      ("base-object", po::value(&baseObject)->default_value("Base"), "object name of the Base interface");
   return rgnav::runServer(argc, argv, options, [&](rgnav::ServerRuntime& runtime) {
     rgnav::LogReaderOptions reader;
     reader.maxRange = maxRange;
@@ -29,8 +31,8 @@ int main(int argc, char** argv) {
     auto shared = std::make_shared<rgnav::PlaybackShared>(
         rgnav::openLog(log, reader), mode, buffer,
         rgnav::PlaybackClock(runtime.server().stateDir, log, rgnav::formatReplayMode(mode)), maxBatch);
-    runtime.activate("Laser", new rgnav::PlaybackLaserImpl(runtime, shared));
-    runtime.activate("Base", new rgnav::PlaybackBaseImpl(runtime, shared));
+    runtime.activate(laserObject, new rgnav::PlaybackLaserImpl(runtime, shared));
+    runtime.activate(baseObject, new rgnav::PlaybackBaseImpl(runtime, shared));
     std::cerr << "playback of " << log << " (" << rgnav::formatReplayMode(mode) << ")"
               << (shared->clock.resumed() ? ", resumed" : "") << " serving on " << runtime.server().endpoint.str()
               << std::endl;

@@ -99,6 +99,7 @@ void TestCluster::start(const std::vector<std::string>& running) {
     for (const auto& [name, port] : ports_) names.push_back(name);
   for (const std::string& name : names)
     waitFor(name, [](const ModuleProcessInfo& m) { return m.state == ProcessState::Running; }, "running");
+  for (const ModuleProcessInfo& m : watchdog().modules()) remember(static_cast<pid_t>(m.pid));  // omniNames too
 }
 
 void TestCluster::stopWatchdog(int signal) {
