@@ -7,7 +7,6 @@
 #include <sys/file.h>
 #include <unistd.h>
 
-#include <boost/program_options.hpp>
 #include <filesystem>
 #include <fstream>
 #include <iostream>
@@ -17,6 +16,7 @@
 #include "watchdog/LivenessProbe.h"
 #include "watchdog/SetLoading.h"
 #include "watchdog/WatchdogImpl.h"
+#include "tools/common/CommandLine.h"
 
 namespace po = boost::program_options;
 namespace fs = std::filesystem;
@@ -45,13 +45,7 @@ int main(int argc, char** argv) {
        "base for relative run_dir and ${RGNAV_ROOT}")
       ("print-run-dir", po::bool_switch(&printRunDir), "print the set's run directory and exit");
   try {
-    po::variables_map vm;
-    po::store(po::parse_command_line(argc, argv, desc), vm);
-    if (vm.count("help")) {
-      std::cout << desc << std::endl;
-      return 0;
-    }
-    po::notify(vm);
+    if (!rgnav::parseCommandLine(argc, argv, desc)) return 0;
     const rgnav::SetConfig config = rgnav::loadSet(setFile, root);
     if (printRunDir) {
       std::cout << config.runDir << std::endl;

@@ -12,7 +12,6 @@
 #include <unistd.h>
 
 #include <algorithm>
-#include <boost/program_options.hpp>
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
@@ -24,6 +23,7 @@
 #include "clientlibs/laser/LaserClient.h"
 #include "tests/support/cluster/TestCluster.h"
 #include "watchdog/Spawn.h"
+#include "tools/common/CommandLine.h"
 
 namespace po = boost::program_options;
 using namespace rgnav;
@@ -79,13 +79,7 @@ int main(int argc, char** argv) {
       ("restarts", po::value(&restarts)->default_value(restarts), "SIGKILL restarts to time")
       ("hangs", po::value(&hangs)->default_value(hangs), "SIGSTOP hangs to time");
   try {
-    po::variables_map vm;
-    po::store(po::parse_command_line(argc, argv, desc), vm);
-    if (vm.count("help")) {
-      std::cout << desc << std::endl;
-      return 0;
-    }
-    po::notify(vm);
+    if (!rgnav::parseCommandLine(argc, argv, desc)) return 0;
 
     TestCluster cluster({{"LogPlayback",
                           {TestCluster::program("rgnav-carmen-playback"), "--log",

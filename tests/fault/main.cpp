@@ -9,7 +9,6 @@
 #include <sys/wait.h>
 
 #include <algorithm>
-#include <boost/program_options.hpp>
 #include <cstdio>
 #include <fstream>
 #include <iostream>
@@ -21,6 +20,7 @@
 #include "core/logs/ReplayMode.h"
 #include "tests/support/cluster/TestCluster.h"
 #include "watchdog/Spawn.h"
+#include "tools/common/CommandLine.h"
 
 namespace po = boost::program_options;
 using namespace rgnav;
@@ -88,13 +88,7 @@ int main(int argc, char** argv) {
       ("speed", po::value(&options.speed)->default_value(options.speed), "replay speed (x<k> or realtime)")
       ("seed", po::value(&options.seed)->default_value(options.seed), "seed for the fault schedule");
   try {
-    po::variables_map vm;
-    po::store(po::parse_command_line(argc, argv, desc), vm);
-    if (vm.count("help")) {
-      std::cout << desc << std::endl;
-      return 0;
-    }
-    po::notify(vm);
+    if (!rgnav::parseCommandLine(argc, argv, desc)) return 0;
 
     const std::size_t expected = scansInLog(options.log);
     const double replaySeconds = logSeconds(options.log) / parseReplayMode(options.speed).speed;

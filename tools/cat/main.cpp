@@ -2,7 +2,6 @@
 // the first real consumer of the data path. It resumes after restarts of the producer (the
 // client library reconnects), checks that IDs arrive once and in order, and ends with a summary:
 //   cat laser: received=910 first=1 last=910 gaps=0 duplicates=0 reconnects=3
-#include <boost/program_options.hpp>
 #include <chrono>
 #include <fstream>
 #include <iostream>
@@ -12,6 +11,7 @@
 #include "clientlibs/laser/LaserClient.h"
 #include "tools/cat/IdSequenceCheck.h"
 #include "tools/cat/RecordFormat.h"
+#include "tools/common/CommandLine.h"
 
 namespace po = boost::program_options;
 
@@ -76,13 +76,7 @@ int main(int argc, char** argv) {
   po::positional_options_description positional;
   positional.add("stream", 1);
   try {
-    po::variables_map vm;
-    po::store(po::command_line_parser(argc, argv).options(desc).positional(positional).run(), vm);
-    if (vm.count("help")) {
-      std::cout << desc << std::endl;
-      return 0;
-    }
-    po::notify(vm);
+    if (!rgnav::parseCommandLine(argc, argv, desc, positional)) return 0;
     rgnav::ClientSettings settings = rgnav::ClientSettings::fromEnvironment();
     if (!naming.empty()) settings.setNaming(naming);
     if (!robot.empty()) settings.robot = robot;

@@ -1,6 +1,5 @@
 // rgnav-ctl: talks to the watchdog of a server set: status table, waiting until every module
 // runs, operator stop/start/restart of one module, the event log, and shutdown of the set.
-#include <boost/program_options.hpp>
 #include <chrono>
 #include <cstdio>
 #include <iostream>
@@ -8,6 +7,7 @@
 
 #include "clientlibs/watchdog/WatchdogClient.h"
 #include "watchdog/SetLoading.h"
+#include "tools/common/CommandLine.h"
 
 namespace po = boost::program_options;
 
@@ -65,13 +65,7 @@ int main(int argc, char** argv) {
   po::positional_options_description positional;
   positional.add("command", 1).add("module", 1);
   try {
-    po::variables_map vm;
-    po::store(po::command_line_parser(argc, argv).options(desc).positional(positional).run(), vm);
-    if (vm.count("help")) {
-      std::cout << desc << std::endl;
-      return 0;
-    }
-    po::notify(vm);
+    if (!rgnav::parseCommandLine(argc, argv, desc, positional)) return 0;
     const rgnav::SetConfig set = rgnav::loadSet(setFile, rgnav::defaultProjectRoot());
     if (command == "naming") {
       std::cout << set.naming.host << ":" << set.naming.port << std::endl;
