@@ -133,7 +133,9 @@ SpawnSpec SupervisedSet::spawnSpec(const Module& module) const {
   return spec;
 }
 
-void SupervisedSet::launch(Module& module, const char* why) {
+void SupervisedSet::launch(Module& module, Launch kind) {
+  static constexpr const char* kWhy[] = {"started", "restarted", "started-by-operator", "restarted-by-operator"};
+  const char* why = kWhy[static_cast<int>(kind)];
   module.restartAt.reset();
   module.misses = 0;
   try {
@@ -141,7 +143,7 @@ void SupervisedSet::launch(Module& module, const char* why) {
     module.pid = child.pid();
     module.state = ProcessState::Starting;
     module.startedAt = Clock::now();
-    if (module.everStarted) ++module.restarts;
+    if (kind == Launch::Restart) ++module.restarts;
     module.everStarted = true;
     event(module, why, "pid " + std::to_string(module.pid));
     saveState();
@@ -164,7 +166,7 @@ void SupervisedSet::handleExit(Module& module, const ExitStatus& status) {
       module.restartAfterStop = false;
       module.wanted = true;
       module.tracker.reset();
-      launch(module, "restarted-by-operator");
+      launch(module, Launch::OperatorRestart);
     }
     return;
   }
@@ -179,7 +181,7 @@ void SupervisedSet::handleExit(Module& module, const ExitStatus& status) {
                                                        std::to_string(std::chrono::duration<double>(decision.delay).count()) + " s"
                                                                         : "; restarting"));
       if (decision.delay.count() == 0) {
-        launch(module, "restarted");
+        launch(module, Launch::Restart);
       } else {
         module.state = ProcessState::Backoff;
         module.restartAt = Clock::now() + decision.delay;
@@ -228,9 +230,9 @@ void SupervisedSet::monitor() {
       if (module.state == ProcessState::Starting && now - module.startedAt > module.spec.policy.startTimeout)
         markHung(module, "no answer within the start timeout");
       else if (module.state == ProcessState::Backoff && module.restartAt && now >= *module.restartAt)
-        launch(module, "restarted");
+        launch(module, Launch::Restart);
       else if (!module.everStarted && module.wanted && module.pid == 0 && dependenciesReady(module))
-        launch(module, "started");
+        launch(module, Launch::First);
     }
     wake_.wait_for(lock, kMonitorTick, [&] { return stopping_.load(); });
   }
@@ -339,7 +341,7 @@ void SupervisedSet::startModule(const std::string& name) {
   if (processes_.find(name)) return;  // already running
   module.wanted = true;
   module.tracker.reset();
-  launch(module, "started-by-operator");
+  launch(module, Launch::OperatorStart);
 }
 
 void SupervisedSet::restartModule(const std::string& name) {
@@ -353,7 +355,7 @@ void SupervisedSet::restartModule(const std::string& name) {
   } else {
     module.wanted = true;
     module.tracker.reset();
-    launch(module, "started-by-operator");
+    launch(module, Launch::OperatorStart);
   }
 }
 

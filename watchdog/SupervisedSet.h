@@ -63,7 +63,9 @@ class SupervisedSet {
 
   void monitor();                      // reaping, restarts, start timeouts, pending starts
   void heartbeat(Module& module);      // one thread per module
-  void launch(Module& module, const char* why);  // under lock
+  // First start, automatic restart (the only kind counted in `restarts`), or by the operator.
+  enum class Launch { First, Restart, OperatorStart, OperatorRestart };
+  void launch(Module& module, Launch kind);  // under lock
   void handleExit(Module& module, const ExitStatus& status);  // under lock
   void markHung(Module& module, const std::string& why);     // under lock
   bool dependenciesReady(const Module& module) const;        // under lock

@@ -41,6 +41,7 @@ class DataBuffer {
   DataId oldestId() const { return records_.empty() ? 0 : records_.front().id; }
   DataId latestId() const { return records_.empty() ? 0 : records_.back().id; }
   std::size_t size() const { return records_.size(); }
+  bool full() const { return records_.size() == capacity_; }
 
   // Records with ID > afterId, at most maxCount; starts at the oldest held if afterId is older.
   DataBatch<Record> since(DataId afterId, std::size_t maxCount) const {

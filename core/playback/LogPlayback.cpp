@@ -11,6 +11,18 @@ Timestamp stampOf(const LogRecord& record) {
 }
 }  // namespace
 
+// Whether one more record would push out of `buffer` a record an active consumer has not fetched.
+template <class Record>
+bool LogPlayback::wouldEvictUnread(const DataBuffer<Record>& buffer, const std::optional<Cursor>& cursor,
+                                   double wallElapsed) {
+  return cursor && wallElapsed - cursor->lastAsked < kConsumerIdleSeconds && buffer.full() &&
+         buffer.oldestId() > cursor->fetched;
+}
+
+void LogPlayback::advance(std::optional<Cursor>& cursor, DataId afterId, double wallElapsed) {
+  cursor = Cursor{std::max(cursor ? cursor->fetched : 0, afterId), wallElapsed};
+}
+
 LogPlayback::LogPlayback(std::unique_ptr<LogSource> source, ReplayMode mode, std::size_t bufferCapacity)
     : source_(std::move(source)), scans_(bufferCapacity), odometry_(bufferCapacity) {
   pull();
@@ -35,14 +47,18 @@ void LogPlayback::endOfData() {
 void LogPlayback::release(double wallElapsed, Want want, DataId wantedId) {
   const bool asFast = schedule_->mode().kind == ReplayMode::Kind::AsFastAsConsumed;
   while (pending_) {
+    const bool isScan = std::holds_alternative<LaserScan>(*pending_);
     if (asFast) {
       const DataId held = want == Want::Scans ? scans_.latestId() : odometry_.latestId();
       if (held >= wantedId) break;
+      if (isScan ? wouldEvictUnread(scans_, scanCursor_, wallElapsed)
+                 : wouldEvictUnread(odometry_, odometryCursor_, wallElapsed))
+        break;
     } else if (!schedule_->released(stampOf(*pending_), wallElapsed)) {
       break;
     }
-    if (auto* scan = std::get_if<LaserScan>(&*pending_))
-      scans_.push(std::move(*scan));
+    if (isScan)
+      scans_.push(std::move(std::get<LaserScan>(*pending_)));
     else
       odometry_.push(std::move(std::get<OdometryReading>(*pending_)));
     pull();
@@ -51,12 +67,14 @@ void LogPlayback::release(double wallElapsed, Want want, DataId wantedId) {
 
 DataBatch<LaserScan> LogPlayback::scansSince(DataId afterId, std::size_t maxCount, double wallElapsed) {
   std::lock_guard lock(mutex_);
+  advance(scanCursor_, afterId, wallElapsed);
   release(wallElapsed, Want::Scans, afterId + maxCount);
   return scans_.since(afterId, maxCount);
 }
 
 DataBatch<OdometryReading> LogPlayback::odometrySince(DataId afterId, std::size_t maxCount, double wallElapsed) {
   std::lock_guard lock(mutex_);
+  advance(odometryCursor_, afterId, wallElapsed);
   release(wallElapsed, Want::Odometry, afterId + maxCount);
   return odometry_.since(afterId, maxCount);
 }

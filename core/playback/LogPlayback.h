@@ -1,7 +1,11 @@
 // LogPlayback: replays a log (any LogSource) into the bounded scan and odometry buffers that a
 // Laser and a Base server serve by ID. Records are released by a ReplaySchedule: in real time
 // (scaled) by the wall time since the replay started, or, as fast as consumed, as far as the
-// consumers ask. Thread-safe: the Laser and Base servants share one playback.
+// consumers ask. As fast as consumed, the slowest consumer paces the replay: a record is not
+// released while it would push out of a full buffer a record that the active consumers of that
+// stream (those who asked within the last kConsumerIdleSeconds) have not fetched yet, so a
+// consumer that went away for good does not stall the replay. Thread-safe: the Laser and Base
+// servants share one playback.
 #pragma once
 
 #include <cstddef>
@@ -18,6 +22,8 @@ namespace rgnav {
 
 class LogPlayback {
  public:
+  static constexpr double kConsumerIdleSeconds = 5.0;
+
   // Reads the first record to anchor the schedule. Throws as the source does.
   LogPlayback(std::unique_ptr<LogSource> source, ReplayMode mode, std::size_t bufferCapacity);
 
@@ -44,12 +50,24 @@ class LogPlayback {
   void pull();  // reads the next record into pending_ (or marks the end)
   void endOfData();
 
+  // Per stream: the highest "after ID" a consumer asked with, and when it last asked.
+  struct Cursor {
+    DataId fetched = 0;
+    double lastAsked = 0.0;
+  };
+  template <class Record>
+  static bool wouldEvictUnread(const DataBuffer<Record>& buffer, const std::optional<Cursor>& cursor,
+                               double wallElapsed);
+  static void advance(std::optional<Cursor>& cursor, DataId afterId, double wallElapsed);
+
   mutable std::mutex mutex_;
   std::unique_ptr<LogSource> source_;
   std::optional<LogRecord> pending_;
   std::optional<ReplaySchedule> schedule_;
   DataBuffer<LaserScan> scans_;
   DataBuffer<OdometryReading> odometry_;
+  std::optional<Cursor> scanCursor_;
+  std::optional<Cursor> odometryCursor_;
   std::string readError_;
 };
 

@@ -50,6 +50,7 @@ class LogPlaybackTest : public CppUnit::TestFixture {
   CPPUNIT_TEST(asFastReleasesWhatConsumersAsk);
   CPPUNIT_TEST(odometryIsInterpolatedAtStamps);
   CPPUNIT_TEST(smallBufferDropsOldScans);
+  CPPUNIT_TEST(slowestActiveConsumerPacesTheReplay);
   CPPUNIT_TEST(replaysTheWholeIntelLogInOrder);
   CPPUNIT_TEST_SUITE_END();
 
@@ -92,6 +93,18 @@ class LogPlaybackTest : public CppUnit::TestFixture {
     CPPUNIT_ASSERT_EQUAL(DataId(8), playback.oldestScanId());
     CPPUNIT_ASSERT_THROW(playback.scan(2, 100.0), NotAvailableError);
     CPPUNIT_ASSERT_THROW(playback.scan(0, 100.0), InvalidArgumentError);
+  }
+  void slowestActiveConsumerPacesTheReplay() {
+    LogPlayback playback(std::make_unique<TenSecondLog>(), parseReplayMode("max"), 3);
+    CPPUNIT_ASSERT_EQUAL(std::size_t(3), playback.scansSince(0, 3, 0.0).records.size());
+    // An odometry reader far ahead must not push out scans 1..3 the scan reader has not confirmed.
+    CPPUNIT_ASSERT_THROW(playback.odometryAt(100.0, 0.1), NotAvailableError);
+    CPPUNIT_ASSERT_EQUAL(DataId(1), playback.scansSince(0, 3, 0.2).records.front().id);
+    // Asking after 3 confirms 1..3, so the replay moves on.
+    CPPUNIT_ASSERT_EQUAL(DataId(4), playback.scansSince(3, 3, 0.3).records.front().id);
+    // A scan reader silent for longer than the idle limit no longer holds the replay back.
+    const double later = 0.3 + LogPlayback::kConsumerIdleSeconds;
+    CPPUNIT_ASSERT_DOUBLES_EQUAL(10.0, playback.odometryAt(9.0, later).pose.x, 1e-9);
   }
   void replaysTheWholeIntelLogInOrder() {
     LogPlayback playback(openLog(sharedPath("data/laser/corrected/intel-corrected.log.gz")),

@@ -28,8 +28,10 @@ auto guarded(F&& f) {
   }
 }
 
-void publishCounters(ModuleHealth& health, const PlaybackShared& shared) {
-  const LogStats stats = shared.playback.stats();
+}  // namespace
+
+void reportPlayback(ModuleHealth& health, const LogPlayback& playback) {
+  const LogStats stats = playback.stats();
   health.set("log_lines", stats.lines);
   health.set("log_scans", stats.scans);
   health.set("log_odometry", stats.odometryReadings);
@@ -37,11 +39,11 @@ void publishCounters(ModuleHealth& health, const PlaybackShared& shared) {
   health.set("log_overlong_lines", stats.overLongLines);
   health.set("ranges_dropped", stats.droppedRanges);
   health.set("ranges_no_return", stats.noReturnRanges);
-  if (const std::string error = shared.playback.readError(); !error.empty()) health.setError(error);
-  else if (!stats.problems.empty()) health.setError(stats.problems.back());
+  if (const std::string error = playback.readError(); !error.empty())
+    health.setError("log", error);
+  else if (!stats.problems.empty())
+    health.setError("log", stats.problems.back());
 }
-
-}  // namespace
 
 PlaybackLaserImpl::PlaybackLaserImpl(ServerRuntime& runtime, std::shared_ptr<PlaybackShared> shared)
     : ServiceServant(runtime), shared_(std::move(shared)) {}
@@ -54,7 +56,6 @@ RGNav::ScanBatch* PlaybackLaserImpl::scansSince(RGNav::DataId afterId, CORBA::UL
   const std::size_t count = cappedCount(maxCount, shared_->maxBatch);
   auto batch = guarded([&] { return shared_->playback.scansSince(afterId, count, shared_->clock.elapsed()); });
   runtime_.health().add("scans_served", batch.records.size());
-  publishCounters(runtime_.health(), *shared_);
   return new RGNav::ScanBatch(toIdl(batch));
 }
 

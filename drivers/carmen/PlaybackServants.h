@@ -23,6 +23,9 @@ struct PlaybackShared {
   std::uint32_t maxBatch;
 };
 
+// Puts the playback's reading statistics and problems into the module's status.
+void reportPlayback(ModuleHealth& health, const LogPlayback& playback);
+
 class PlaybackLaserImpl : public ServiceServant<POA_RGNav::Laser> {
  public:
   PlaybackLaserImpl(ServerRuntime& runtime, std::shared_ptr<PlaybackShared> shared);

@@ -27,15 +27,38 @@ void ModuleHealth::set(const std::string& counter, std::uint64_t value) {
   status_.counters[counter] = value;
 }
 
-void ModuleHealth::setError(const std::string& message) {
+void ModuleHealth::setError(const std::string& source, const std::string& message) {
   std::lock_guard lock(mutex_);
-  status_.lastError = message;
+  auto& entry = errors_[source];
+  if (entry.second != message) entry = {++errorOrder_, message};
 }
 
-ModuleStatusInfo ModuleHealth::snapshot() const {
+void ModuleHealth::clearError(const std::string& source) {
+  std::lock_guard lock(mutex_);
+  errors_.erase(source);
+}
+
+void ModuleHealth::addReporter(Reporter reporter) {
+  std::lock_guard lock(mutex_);
+  reporters_.push_back(std::move(reporter));
+}
+
+ModuleStatusInfo ModuleHealth::snapshot() {
+  std::vector<Reporter> reporters;
+  {
+    std::lock_guard lock(mutex_);
+    reporters = reporters_;
+  }
+  for (const Reporter& report : reporters) report(*this);
   std::lock_guard lock(mutex_);
   ModuleStatusInfo copy = status_;
   copy.uptimeSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - started_).count();
+  std::uint64_t newest = 0;
+  for (const auto& [source, entry] : errors_)
+    if (entry.first > newest) {
+      newest = entry.first;
+      copy.lastError = source + ": " + entry.second;
+    }
   return copy;
 }
 

@@ -18,6 +18,9 @@ namespace rgnav {
 namespace {
 
 constexpr auto kRegistrationCheck = std::chrono::milliseconds(1000);
+// After a failure: the first call to a restarted naming service fails on the old connection,
+// the next one opens a new connection.
+constexpr auto kRegistrationRetry = std::chrono::milliseconds(100);
 
 sigset_t terminationSignals() {
   sigset_t set;
@@ -128,9 +131,10 @@ bool ServerRuntime::registerAll() {
       }
       if (!current) robot->rebind(leafName(name), ref);
     }
+    health_.clearError("naming");
     return true;
   } catch (const CORBA::Exception& e) {
-    health_.setError(std::string("naming service: ") + e._name());
+    health_.setError("naming", std::string("cannot register: ") + e._name());
     return false;
   }
 }
@@ -161,9 +165,9 @@ void ServerRuntime::keepRegistered() {
   std::unique_lock lock(mutex_);
   while (!stopping_) {
     lock.unlock();
-    registerAll();
+    const bool registered = registerAll();
     lock.lock();
-    wake_.wait_for(lock, kRegistrationCheck, [&] { return stopping_; });
+    wake_.wait_for(lock, registered ? kRegistrationCheck : kRegistrationRetry, [&] { return stopping_; });
   }
 }
 
