@@ -64,16 +64,24 @@ SupervisedSet::SupervisedSet(SetConfig config, ProbeFactory probes)
 }
 
 SupervisedSet::~SupervisedSet() {
-  stopping_ = true;
+  {
+    std::lock_guard lock(mutex_);
+    shuttingDown_ = true;
+    stopping_ = true;
+  }
   wake_.notify_all();
   joinThreads();
 }
 
 void SupervisedSet::event(Module& module, const std::string& what, const std::string& detail) {
   module.lastEvent = what + (detail.empty() ? "" : ": " + detail);
+  record(module.spec.name, what, detail);
+}
+
+void SupervisedSet::record(const std::string& module, const std::string& what, const std::string& detail) {
   try {
-    events_.record(module.spec.name, what, detail);
-  } catch (const FileError&) {
+    events_.record(module, what, detail);
+  } catch (const Error&) {
     // The event stays in memory; a full disk must not stop supervision.
   }
 }
@@ -94,7 +102,7 @@ void SupervisedSet::start() {
   try {
     left = stateFile_.read();
   } catch (const Error& e) {
-    events_.record("-", "state-unreadable", e.what());
+    record("-", "state-unreadable", e.what());
   }
   for (const ProcessRecord& record : left) {
     auto it = std::find_if(modules_.begin(), modules_.end(), [&](auto& m) { return m->spec.name == record.module; });
@@ -138,21 +146,26 @@ void SupervisedSet::launch(Module& module, Launch kind) {
   const char* why = kWhy[static_cast<int>(kind)];
   module.restartAt.reset();
   module.misses = 0;
+  if (shuttingDown_) {
+    module.state = ProcessState::Stopped;
+    event(module, "not-started", std::string(why) + " refused: the set is shutting down");
+    return;
+  }
   try {
-    ChildProcess& child = processes_.start(module.spec.name, spawnSpec(module));
-    module.pid = child.pid();
-    module.state = ProcessState::Starting;
-    module.startedAt = Clock::now();
-    if (kind == Launch::Restart) ++module.restarts;
-    module.everStarted = true;
-    event(module, why, "pid " + std::to_string(module.pid));
-    saveState();
-    wake_.notify_all();  // its heartbeat starts probing at once
-  } catch (const Error& e) {
+    module.pid = processes_.start(module.spec.name, spawnSpec(module)).pid();
+  } catch (const std::exception& e) {
     module.everStarted = true;
     event(module, "spawn-failed", e.what());
     handleExit(module, ExitStatus::exited(127));
+    return;
   }
+  module.state = ProcessState::Starting;
+  module.startedAt = Clock::now();
+  if (kind == Launch::Restart) ++module.restarts;
+  module.everStarted = true;
+  event(module, why, "pid " + std::to_string(module.pid));
+  saveState();
+  wake_.notify_all();  // its heartbeat starts probing at once
 }
 
 void SupervisedSet::handleExit(Module& module, const ExitStatus& status) {
@@ -170,8 +183,9 @@ void SupervisedSet::handleExit(Module& module, const ExitStatus& status) {
     }
     return;
   }
-  if (stopping_) {
+  if (shuttingDown_) {
     module.state = ProcessState::Stopped;
+    event(module, "stopped", status.describe() + " while the set shuts down");
     return;
   }
   const RestartDecision decision = module.tracker.onExit(ExitInfo{status, false}, Clock::now());
@@ -216,23 +230,30 @@ void SupervisedSet::saveState() {
   try {
     stateFile_.write(processes_.records());
   } catch (const Error& e) {
-    events_.record("-", "state-unwritable", e.what());
+    record("-", "state-unwritable", e.what());
+  }
+}
+
+void SupervisedSet::superviseOnce(Clock::time_point now) {
+  for (const ModuleExit& exit : processes_.poll(now)) handleExit(find(exit.module), exit.status);
+  for (auto& m : modules_) {
+    Module& module = *m;
+    if (module.state == ProcessState::Starting && now - module.startedAt > module.spec.policy.startTimeout)
+      markHung(module, "no answer within the start timeout");
+    else if (module.state == ProcessState::Backoff && module.restartAt && now >= *module.restartAt)
+      launch(module, Launch::Restart);
+    else if (!module.everStarted && module.wanted && module.pid == 0 && dependenciesReady(module))
+      launch(module, Launch::First);
   }
 }
 
 void SupervisedSet::monitor() {
   std::unique_lock lock(mutex_);
   while (!stopping_) {
-    const auto now = Clock::now();
-    for (const ModuleExit& exit : processes_.poll(now)) handleExit(find(exit.module), exit.status);
-    for (auto& m : modules_) {
-      Module& module = *m;
-      if (module.state == ProcessState::Starting && now - module.startedAt > module.spec.policy.startTimeout)
-        markHung(module, "no answer within the start timeout");
-      else if (module.state == ProcessState::Backoff && module.restartAt && now >= *module.restartAt)
-        launch(module, Launch::Restart);
-      else if (!module.everStarted && module.wanted && module.pid == 0 && dependenciesReady(module))
-        launch(module, Launch::First);
+    try {
+      superviseOnce(Clock::now());
+    } catch (const std::exception& e) {
+      record("-", "supervision-error", e.what());  // supervision goes on
     }
     wake_.wait_for(lock, kMonitorTick, [&] { return stopping_.load(); });
   }
@@ -265,7 +286,7 @@ void SupervisedSet::heartbeat(Module& module) {
         module.tracker.onReady();
         event(module, "ready", "pid " + std::to_string(module.pid) + " answers");
       }
-    } else if (module.state == ProcessState::Running) {
+    } else if (module.state == ProcessState::Running && !shuttingDown_) {
       if (++module.misses >= config_.watchdog.hangMisses)
         markHung(module, std::to_string(module.misses) + " pings unanswered");
       else
@@ -275,29 +296,41 @@ void SupervisedSet::heartbeat(Module& module) {
 }
 
 void SupervisedSet::stopAll() {
-  std::unique_lock lock(mutex_);
-  for (auto it = modules_.rbegin(); it != modules_.rend(); ++it) {
-    Module& module = **it;
-    module.wanted = false;
-    module.restartAt.reset();
-    ChildProcess* child = processes_.find(module.spec.name);
-    if (!child) {
-      if (module.state != ProcessState::Fatal) module.state = ProcessState::Stopped;
-      continue;
+  {
+    std::lock_guard lock(mutex_);
+    shuttingDown_ = true;
+    for (auto& module : modules_) {
+      module->wanted = false;
+      module->restartAfterStop = false;
+      module->restartAt.reset();
+      if (module->state == ProcessState::Backoff) module->state = ProcessState::Stopped;
     }
-    module.operatorStop = true;
-    try {
-      child->stop(module.spec.policy.stopTimeout);
-    } catch (const Error& e) {
-      event(module, "stop-failed", e.what());
-    }
-    for (const ModuleExit& exit : processes_.poll(Clock::now())) handleExit(find(exit.module), exit.status);
   }
-  stopping_ = true;
-  saveState();
-  lock.unlock();
+  for (auto it = modules_.rbegin(); it != modules_.rend(); ++it) stopAndWait(**it);
+  {
+    std::lock_guard lock(mutex_);
+    stopping_ = true;
+    saveState();
+  }
   wake_.notify_all();
   joinThreads();
+}
+
+void SupervisedSet::stopAndWait(Module& module) {
+  const auto giveUp = Clock::now() + module.spec.policy.stopTimeout + ChildProcess::kKillGrace;
+  std::unique_lock lock(mutex_);
+  ChildProcess* child = processes_.find(module.spec.name);
+  if (!child) return;
+  module.operatorStop = true;
+  child->requestStop(Clock::now(), module.spec.policy.stopTimeout);
+  // The monitor thread reaps it (and sends SIGKILL after the stop timeout).
+  while (processes_.find(module.spec.name)) {
+    if (Clock::now() > giveUp) {
+      event(module, "stop-failed", "pid " + std::to_string(module.pid) + " survived SIGKILL");
+      return;
+    }
+    wake_.wait_for(lock, kMonitorTick);
+  }
 }
 
 void SupervisedSet::joinThreads() {

@@ -61,7 +61,9 @@ class SupervisedSet {
  private:
   struct Module;
 
-  void monitor();                      // reaping, restarts, start timeouts, pending starts
+  void monitor();                      // runs superviseOnce every tick
+  void superviseOnce(SupervisionClock::time_point now);  // reaping, restarts, start timeouts, pending starts; under lock
+  void stopAndWait(Module& module);
   void heartbeat(Module& module);      // one thread per module
   // First start, automatic restart (the only kind counted in `restarts`), or by the operator.
   enum class Launch { First, Restart, OperatorStart, OperatorRestart };
@@ -75,6 +77,7 @@ class SupervisedSet {
   Module& find(const std::string& name);
   const Module& find(const std::string& name) const;
   void event(Module& module, const std::string& what, const std::string& detail);
+  void record(const std::string& module, const std::string& what, const std::string& detail);
 
   SetConfig config_;
   ProbeFactory probes_;
@@ -85,7 +88,8 @@ class SupervisedSet {
   mutable std::mutex mutex_;
   std::condition_variable wake_;
   ProcessTable processes_;
-  std::atomic<bool> stopping_{false};
+  bool shuttingDown_ = false;          // under mutex_: no more starts, exits are final
+  std::atomic<bool> stopping_{false};  // the threads end
   std::thread monitor_;
   std::vector<std::thread> heartbeats_;
 };

@@ -60,7 +60,7 @@ int main(int argc, char** argv) {
                                   "--endpoint", endpoint, "--naming", naming};
     std::vector<char*> runtimeArgv;
     for (auto& a : args) runtimeArgv.push_back(a.data());
-    return rgnav::runServer(static_cast<int>(runtimeArgv.size()), runtimeArgv.data(), {}, [&](rgnav::ServerRuntime& runtime) {
+    const int code = rgnav::runServer(static_cast<int>(runtimeArgv.size()), runtimeArgv.data(), {}, [&](rgnav::ServerRuntime& runtime) {
       const auto timeout =
           std::chrono::duration_cast<std::chrono::milliseconds>(config.watchdog.heartbeatTimeout);
       // A call that opens a connection is bounded by the connect timeout instead of its own, so
@@ -75,6 +75,8 @@ int main(int argc, char** argv) {
       set->start();
       runtime.onShutdown([set] { set->stopAll(); });
     });
+    fs::remove(config.runDir + "/watchdog.pid");
+    return code;
   } catch (const po::error& e) {
     std::cerr << "rgnav-watchdog: " << e.what() << "\n" << desc << std::endl;
   } catch (const std::exception& e) {

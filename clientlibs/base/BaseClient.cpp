@@ -7,7 +7,7 @@
 namespace rgnav {
 
 BaseClient::BaseClient(ClientSettings settings, std::string objectName)
-    : ModuleClientOf(std::move(objectName), std::move(settings)) {}
+    : ModuleClientOf(std::move(objectName), settings), consumer_(settings.consumer) {}
 
 DataId BaseClient::latestOdometryId() {
   return connection_.call("latestOdometryId", [](RGNav::Base_ptr b) { return b->latestOdometryId(); });
@@ -15,7 +15,7 @@ DataId BaseClient::latestOdometryId() {
 
 DataBatch<OdometryReading> BaseClient::odometrySince(DataId afterId, std::uint32_t maxCount) {
   return connection_.call("odometrySince", [&](RGNav::Base_ptr b) {
-    RGNav::OdometryBatch_var batch = b->odometrySince(afterId, maxCount);
+    RGNav::OdometryBatch_var batch = b->odometrySince(afterId, maxCount, consumer_.c_str());
     return fromIdl(batch.in());
   });
 }

@@ -17,6 +17,9 @@ class BaseClient : public ModuleClientOf<RGNav::Base> {
   OdometryReading odometryAt(Timestamp stamp);
   // NotSupportedError where the base cannot drive (log playback).
   void setVelocity(double translational, double rotational);
+
+ private:
+  std::string consumer_;
 };
 
 }  // namespace rgnav

@@ -97,18 +97,20 @@ void ClientConnection::invoke(const char* operation, Idempotence idempotence,
       } catch (const RGNav::NotSupported& e) {
         state_ = ConnectionState::Connected;
         throw NotSupportedError(where + ": " + e.message.in());
-      } catch (const CORBA::TRANSIENT& e) {
+      } catch (const CORBA::SystemException& e) {
         lastFailure = describe(e);
-      } catch (const CORBA::OBJECT_NOT_EXIST& e) {
-        lastFailure = describe(e);
-      } catch (const CORBA::COMM_FAILURE& e) {
-        lastFailure = describe(e);
-        if (idempotence == Idempotence::NotIdempotent && e.completed() != CORBA::COMPLETED_NO)
+        const bool restartLike = dynamic_cast<const CORBA::TRANSIENT*>(&e) || dynamic_cast<const CORBA::COMM_FAILURE*>(&e) ||
+                                 dynamic_cast<const CORBA::TIMEOUT*>(&e) || dynamic_cast<const CORBA::OBJECT_NOT_EXIST*>(&e);
+        if (!restartLike) {
+          state_ = ConnectionState::Connected;
+          throw Error(where + ": " + lastFailure + " (not a connection failure, not retried)");
+        }
+        const bool mayHaveRun = dynamic_cast<const CORBA::TIMEOUT*>(&e) || e.completed() != CORBA::COMPLETED_NO;
+        if (idempotence == Idempotence::NotIdempotent && mayHaveRun)
           throw ModuleUnavailableError(where + ": " + lastFailure + "; the call may have run, not retried");
-      } catch (const CORBA::TIMEOUT& e) {
-        lastFailure = describe(e);
-        if (idempotence == Idempotence::NotIdempotent)
-          throw ModuleUnavailableError(where + ": " + lastFailure + "; the call may have run, not retried");
+      } catch (const CORBA::UserException& e) {
+        state_ = ConnectionState::Connected;
+        throw Error(where + ": unexpected " + e._name());
       }
     }
     failedBefore = true;

@@ -10,6 +10,7 @@ struct ClientSettings {
   std::string namingHost = "127.0.0.1";
   int namingPort = 2809;
   std::string robot = "tumbot";
+  std::string consumer;  // who asks for data by ID (module or program name); "" is anonymous
   std::chrono::milliseconds callTimeout{2000};     // one call, answer included
   std::chrono::milliseconds connectTimeout{500};   // opening a connection
   std::chrono::milliseconds retryBudget{15000};    // retries of one call, then the module is down

@@ -7,7 +7,7 @@
 namespace rgnav {
 
 LaserClient::LaserClient(ClientSettings settings, std::string objectName)
-    : ModuleClientOf(std::move(objectName), std::move(settings)) {}
+    : ModuleClientOf(std::move(objectName), settings), consumer_(settings.consumer) {}
 
 DataId LaserClient::latestId() {
   return connection_.call("latestId", [](RGNav::Laser_ptr l) { return l->latestId(); });
@@ -19,7 +19,7 @@ DataId LaserClient::oldestId() {
 
 DataBatch<LaserScan> LaserClient::scansSince(DataId afterId, std::uint32_t maxCount) {
   return connection_.call("scansSince", [&](RGNav::Laser_ptr l) {
-    RGNav::ScanBatch_var batch = l->scansSince(afterId, maxCount);
+    RGNav::ScanBatch_var batch = l->scansSince(afterId, maxCount, consumer_.c_str());
     return fromIdl(batch.in());
   });
 }

@@ -17,6 +17,9 @@ class LaserClient : public ModuleClientOf<RGNav::Laser> {
   DataBatch<LaserScan> scansSince(DataId afterId, std::uint32_t maxCount);
   // One scan; NotAvailableError if it is not held, InvalidArgumentError for ID 0.
   LaserScan scan(DataId id);
+
+ private:
+  std::string consumer_;
 };
 
 }  // namespace rgnav

@@ -13,14 +13,17 @@ Timestamp stampOf(const LogRecord& record) {
 
 // Whether one more record would push out of `buffer` a record an active consumer has not fetched.
 template <class Record>
-bool LogPlayback::wouldEvictUnread(const DataBuffer<Record>& buffer, const std::optional<Cursor>& cursor,
-                                   double wallElapsed) {
-  return cursor && wallElapsed - cursor->lastAsked < kConsumerIdleSeconds && buffer.full() &&
-         buffer.oldestId() > cursor->fetched;
+bool LogPlayback::wouldEvictUnread(const DataBuffer<Record>& buffer, const Cursors& cursors, double wallElapsed) {
+  if (!buffer.full()) return false;
+  for (const auto& [consumer, cursor] : cursors)
+    if (wallElapsed - cursor.lastAsked < kConsumerIdleSeconds && buffer.oldestId() > cursor.fetched) return true;
+  return false;
 }
 
-void LogPlayback::advance(std::optional<Cursor>& cursor, DataId afterId, double wallElapsed) {
-  cursor = Cursor{std::max(cursor ? cursor->fetched : 0, afterId), wallElapsed};
+void LogPlayback::advance(Cursors& cursors, const std::string& consumer, DataId afterId, double wallElapsed) {
+  if (consumer.empty()) return;
+  Cursor& cursor = cursors[consumer];
+  cursor = Cursor{std::max(cursor.fetched, afterId), wallElapsed};
 }
 
 LogPlayback::LogPlayback(std::unique_ptr<LogSource> source, ReplayMode mode, std::size_t bufferCapacity)
@@ -51,8 +54,8 @@ void LogPlayback::release(double wallElapsed, Want want, DataId wantedId) {
     if (asFast) {
       const DataId held = want == Want::Scans ? scans_.latestId() : odometry_.latestId();
       if (held >= wantedId) break;
-      if (isScan ? wouldEvictUnread(scans_, scanCursor_, wallElapsed)
-                 : wouldEvictUnread(odometry_, odometryCursor_, wallElapsed))
+      if (isScan ? wouldEvictUnread(scans_, scanCursors_, wallElapsed)
+                 : wouldEvictUnread(odometry_, odometryCursors_, wallElapsed))
         break;
     } else if (!schedule_->released(stampOf(*pending_), wallElapsed)) {
       break;
@@ -65,16 +68,18 @@ void LogPlayback::release(double wallElapsed, Want want, DataId wantedId) {
   }
 }
 
-DataBatch<LaserScan> LogPlayback::scansSince(DataId afterId, std::size_t maxCount, double wallElapsed) {
+DataBatch<LaserScan> LogPlayback::scansSince(DataId afterId, std::size_t maxCount, double wallElapsed,
+                                             const std::string& consumer) {
   std::lock_guard lock(mutex_);
-  advance(scanCursor_, afterId, wallElapsed);
+  advance(scanCursors_, consumer, afterId, wallElapsed);
   release(wallElapsed, Want::Scans, afterId + maxCount);
   return scans_.since(afterId, maxCount);
 }
 
-DataBatch<OdometryReading> LogPlayback::odometrySince(DataId afterId, std::size_t maxCount, double wallElapsed) {
+DataBatch<OdometryReading> LogPlayback::odometrySince(DataId afterId, std::size_t maxCount, double wallElapsed,
+                                                      const std::string& consumer) {
   std::lock_guard lock(mutex_);
-  advance(odometryCursor_, afterId, wallElapsed);
+  advance(odometryCursors_, consumer, afterId, wallElapsed);
   release(wallElapsed, Want::Odometry, afterId + maxCount);
   return odometry_.since(afterId, maxCount);
 }

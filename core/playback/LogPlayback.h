@@ -2,13 +2,15 @@
 // Laser and a Base server serve by ID. Records are released by a ReplaySchedule: in real time
 // (scaled) by the wall time since the replay started, or, as fast as consumed, as far as the
 // consumers ask. As fast as consumed, the slowest consumer paces the replay: a record is not
-// released while it would push out of a full buffer a record that the active consumers of that
-// stream (those who asked within the last kConsumerIdleSeconds) have not fetched yet, so a
-// consumer that went away for good does not stall the replay. Thread-safe: the Laser and Base
-// servants share one playback.
+// released while it would push out of a full buffer a record that one of the stream's active
+// named consumers (those who asked within the last kConsumerIdleSeconds) has not fetched yet,
+// so a consumer that went away for good does not stall the replay, and one that restarts within
+// that time finds its records still there. Anonymous consumers ("") hold nothing back.
+// Thread-safe: the Laser and Base servants share one playback.
 #pragma once
 
 #include <cstddef>
+#include <map>
 #include <memory>
 #include <mutex>
 #include <optional>
@@ -29,8 +31,11 @@ class LogPlayback {
 
   // Scans/readings with ID > afterId (at most maxCount) after releasing what is due at
   // wallElapsed seconds since the replay started.
-  DataBatch<LaserScan> scansSince(DataId afterId, std::size_t maxCount, double wallElapsed);
-  DataBatch<OdometryReading> odometrySince(DataId afterId, std::size_t maxCount, double wallElapsed);
+  // `consumer` names the caller ("" for anonymous).
+  DataBatch<LaserScan> scansSince(DataId afterId, std::size_t maxCount, double wallElapsed,
+                                  const std::string& consumer = "");
+  DataBatch<OdometryReading> odometrySince(DataId afterId, std::size_t maxCount, double wallElapsed,
+                                           const std::string& consumer = "");
   LaserScan scan(DataId id, double wallElapsed);
   // Odometry interpolated at a stamp from the buffered readings; NotAvailableError outside them.
   OdometryReading odometryAt(Timestamp stamp, double wallElapsed);
@@ -50,15 +55,15 @@ class LogPlayback {
   void pull();  // reads the next record into pending_ (or marks the end)
   void endOfData();
 
-  // Per stream: the highest "after ID" a consumer asked with, and when it last asked.
+  // Per stream and named consumer: the highest "after ID" it asked with, and when it last asked.
   struct Cursor {
     DataId fetched = 0;
     double lastAsked = 0.0;
   };
+  using Cursors = std::map<std::string, Cursor>;
   template <class Record>
-  static bool wouldEvictUnread(const DataBuffer<Record>& buffer, const std::optional<Cursor>& cursor,
-                               double wallElapsed);
-  static void advance(std::optional<Cursor>& cursor, DataId afterId, double wallElapsed);
+  static bool wouldEvictUnread(const DataBuffer<Record>& buffer, const Cursors& cursors, double wallElapsed);
+  static void advance(Cursors& cursors, const std::string& consumer, DataId afterId, double wallElapsed);
 
   mutable std::mutex mutex_;
   std::unique_ptr<LogSource> source_;
@@ -66,8 +71,8 @@ class LogPlayback {
   std::optional<ReplaySchedule> schedule_;
   DataBuffer<LaserScan> scans_;
   DataBuffer<OdometryReading> odometry_;
-  std::optional<Cursor> scanCursor_;
-  std::optional<Cursor> odometryCursor_;
+  Cursors scanCursors_;
+  Cursors odometryCursors_;
   std::string readError_;
 };
 

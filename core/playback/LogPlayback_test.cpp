@@ -96,12 +96,16 @@ class LogPlaybackTest : public CppUnit::TestFixture {
   }
   void slowestActiveConsumerPacesTheReplay() {
     LogPlayback playback(std::make_unique<TenSecondLog>(), parseReplayMode("max"), 3);
-    CPPUNIT_ASSERT_EQUAL(std::size_t(3), playback.scansSince(0, 3, 0.0).records.size());
-    // An odometry reader far ahead must not push out scans 1..3 the scan reader has not confirmed.
+    CPPUNIT_ASSERT_EQUAL(std::size_t(3), playback.scansSince(0, 3, 0.0, "slow").records.size());
+    CPPUNIT_ASSERT_EQUAL(std::size_t(3), playback.scansSince(0, 3, 0.0, "fast").records.size());
+    // An odometry reader far ahead must not push out scans 1..3 the scan readers have not confirmed.
     CPPUNIT_ASSERT_THROW(playback.odometryAt(100.0, 0.1), NotAvailableError);
-    CPPUNIT_ASSERT_EQUAL(DataId(1), playback.scansSince(0, 3, 0.2).records.front().id);
-    // Asking after 3 confirms 1..3, so the replay moves on.
-    CPPUNIT_ASSERT_EQUAL(DataId(4), playback.scansSince(3, 3, 0.3).records.front().id);
+    CPPUNIT_ASSERT_EQUAL(DataId(1), playback.scansSince(0, 3, 0.2, "slow").records.front().id);
+    // The fast reader confirms 1..3, but the slow one has not: nothing moves on.
+    CPPUNIT_ASSERT(playback.scansSince(3, 3, 0.3, "fast").records.empty());
+    // Once the slow one confirms them too, the replay moves on.
+    CPPUNIT_ASSERT_EQUAL(DataId(4), playback.scansSince(3, 3, 0.3, "slow").records.front().id);
+    CPPUNIT_ASSERT_EQUAL(DataId(4), playback.scansSince(3, 3, 0.3, "fast").records.front().id);
     // A scan reader silent for longer than the idle limit no longer holds the replay back.
     const double later = 0.3 + LogPlayback::kConsumerIdleSeconds;
     CPPUNIT_ASSERT_DOUBLES_EQUAL(10.0, playback.odometryAt(9.0, later).pose.x, 1e-9);

@@ -11,7 +11,8 @@ namespace rgnav {
 PlaybackClock::PlaybackClock(const std::string& stateDir, const std::string& logPath, const std::string& mode)
     : origin_(std::chrono::system_clock::now()) {
   if (stateDir.empty()) return;
-  const std::string file = stateDir + "/replay-origin";
+  file_ = stateDir + "/replay-origin";
+  const std::string& file = file_;
   const std::string key = logPath + "\n" + mode + "\n";
   std::ifstream in(file);
   std::string savedLog, savedMode;
@@ -25,6 +26,10 @@ PlaybackClock::PlaybackClock(const std::string& stateDir, const std::string& log
   }
   const auto ns = std::chrono::duration_cast<std::chrono::nanoseconds>(origin_.time_since_epoch()).count();
   writeFileAtomically(file, key + std::to_string(ns) + "\n");
+}
+
+void PlaybackClock::discard() const {
+  if (!file_.empty()) std::filesystem::remove(file_);
 }
 
 double PlaybackClock::elapsed() const {

@@ -52,9 +52,9 @@ RGNav::DataId PlaybackLaserImpl::latestId() { return shared_->playback.latestSca
 
 RGNav::DataId PlaybackLaserImpl::oldestId() { return shared_->playback.oldestScanId(); }
 
-RGNav::ScanBatch* PlaybackLaserImpl::scansSince(RGNav::DataId afterId, CORBA::ULong maxCount) {
+RGNav::ScanBatch* PlaybackLaserImpl::scansSince(RGNav::DataId afterId, CORBA::ULong maxCount, const char* consumer) {
   const std::size_t count = cappedCount(maxCount, shared_->maxBatch);
-  auto batch = guarded([&] { return shared_->playback.scansSince(afterId, count, shared_->clock.elapsed()); });
+  auto batch = guarded([&] { return shared_->playback.scansSince(afterId, count, shared_->clock.elapsed(), consumer); });
   runtime_.health().add("scans_served", batch.records.size());
   return new RGNav::ScanBatch(toIdl(batch));
 }
@@ -70,9 +70,9 @@ RGNav::DataId PlaybackBaseImpl::latestOdometryId() {
   return shared_->playback.latestOdometryId(shared_->clock.elapsed());
 }
 
-RGNav::OdometryBatch* PlaybackBaseImpl::odometrySince(RGNav::DataId afterId, CORBA::ULong maxCount) {
+RGNav::OdometryBatch* PlaybackBaseImpl::odometrySince(RGNav::DataId afterId, CORBA::ULong maxCount, const char* consumer) {
   const std::size_t count = cappedCount(maxCount, shared_->maxBatch);
-  auto batch = guarded([&] { return shared_->playback.odometrySince(afterId, count, shared_->clock.elapsed()); });
+  auto batch = guarded([&] { return shared_->playback.odometrySince(afterId, count, shared_->clock.elapsed(), consumer); });
   runtime_.health().add("odometry_served", batch.records.size());
   return new RGNav::OdometryBatch(toIdl(batch));
 }

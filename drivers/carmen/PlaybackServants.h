@@ -32,7 +32,7 @@ class PlaybackLaserImpl : public ServiceServant<POA_RGNav::Laser> {
 
   RGNav::DataId latestId() override;
   RGNav::DataId oldestId() override;
-  RGNav::ScanBatch* scansSince(RGNav::DataId afterId, CORBA::ULong maxCount) override;
+  RGNav::ScanBatch* scansSince(RGNav::DataId afterId, CORBA::ULong maxCount, const char* consumer) override;
   RGNav::LaserScan* scan(RGNav::DataId id) override;
 
  private:
@@ -44,7 +44,7 @@ class PlaybackBaseImpl : public ServiceServant<POA_RGNav::Base> {
   PlaybackBaseImpl(ServerRuntime& runtime, std::shared_ptr<PlaybackShared> shared);
 
   RGNav::DataId latestOdometryId() override;
-  RGNav::OdometryBatch* odometrySince(RGNav::DataId afterId, CORBA::ULong maxCount) override;
+  RGNav::OdometryBatch* odometrySince(RGNav::DataId afterId, CORBA::ULong maxCount, const char* consumer) override;
   RGNav::Odometry odometryAt(const RGNav::Time& stamp) override;
   void setVelocity(CORBA::Double translational, CORBA::Double rotational) override;
 

@@ -31,6 +31,7 @@ int main(int argc, char** argv) {
     auto shared = std::make_shared<rgnav::PlaybackShared>(
         rgnav::openLog(log, reader), mode, buffer,
         rgnav::PlaybackClock(runtime.server().stateDir, log, rgnav::formatReplayMode(mode)), maxBatch);
+    runtime.onShutdown([shared] { shared->clock.discard(); });
     runtime.health().addReporter([shared](rgnav::ModuleHealth& health) { reportPlayback(health, shared->playback); });
     runtime.activate(laserObject, new rgnav::PlaybackLaserImpl(runtime, shared));
     runtime.activate(baseObject, new rgnav::PlaybackBaseImpl(runtime, shared));

@@ -103,6 +103,7 @@ ClientSettings ServerRuntime::clientSettings() const {
   settings.namingHost = server_.naming.host;
   settings.namingPort = server_.naming.port;
   settings.robot = server_.robot;
+  settings.consumer = server_.module;
   return settings;
 }
 

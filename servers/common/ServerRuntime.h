@@ -50,7 +50,8 @@ class ServerRuntime {
   // objectId and registers it as RGNav/<robot>/<boundName> (boundName defaults to objectId).
   void activate(const std::string& objectId, PortableServer::ServantBase* servant, const std::string& boundName = "");
 
-  // Runs `hook` once serving has stopped, before the names are unbound.
+  // Runs `hook` when a stop was requested, before the names are unbound (calls are still
+  // served meanwhile, so a hook may take its time).
   void onShutdown(std::function<void()> hook) { shutdownHooks_.push_back(std::move(hook)); }
 
   // Serves until SIGTERM/SIGINT or requestShutdown(); unbinds the names; returns 0.

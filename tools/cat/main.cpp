@@ -59,13 +59,15 @@ int follow(const Options& options, Fetch fetch, Format format, const std::functi
 
 int main(int argc, char** argv) {
   Options options;
-  std::string naming, robot;
+  std::string naming, robot, consumer;
   po::options_description desc("rgnav-cat <laser|odometry> [options]");
   desc.add_options()
       ("help", "this text")
       ("stream", po::value(&options.stream)->required(), "laser or odometry")
       ("naming", po::value(&naming)->default_value(""), "naming service host:port (default: RGNAV_NAMING or 127.0.0.1:2809)")
       ("robot", po::value(&robot)->default_value(""), "robot name (default: RGNAV_ROBOT or tumbot)")
+      ("consumer", po::value(&consumer)->default_value("rgnav-cat"),
+       "name this reader gives the producer; a producer replaying as fast as consumed waits for it ('' for none)")
       ("after", po::value(&options.after)->default_value(0), "start after this ID")
       ("batch", po::value(&options.batch)->default_value(100), "records per request")
       ("follow", po::bool_switch(&options.follow), "keep following after the end of data")
@@ -81,6 +83,7 @@ int main(int argc, char** argv) {
     if (!naming.empty()) settings.setNaming(naming);
     if (!robot.empty()) settings.robot = robot;
     settings.retryBudget = std::chrono::milliseconds(options.retryBudgetMs);
+    settings.consumer = consumer;
     if (options.stream == "laser") {
       rgnav::LaserClient laser(settings);
       return follow(options, [&](rgnav::DataId after, std::uint32_t n) { return laser.scansSince(after, n); },
