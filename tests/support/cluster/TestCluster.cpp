@@ -60,15 +60,17 @@ std::string yamlList(const std::vector<std::string>& items) {
 }
 }  // namespace
 
-TestCluster::TestCluster(std::vector<ClusterModule> modules, std::string setYaml) {
+TestCluster::TestCluster(std::vector<ClusterModule> modules, std::string setYaml, ClusterHost host)
+    : address_(host.address) {
   std::string pattern = (fs::temp_directory_path() / "rgnav-cluster-XXXXXX").string();
   if (::mkdtemp(pattern.data()) == nullptr) throw std::runtime_error("mkdtemp failed for " + pattern);
   dir_ = pattern;
-  namingPort_ = freeLoopbackPort();
+  const bool managed = host.externalNamingPort == 0;
+  namingPort_ = managed ? freeLoopbackPort() : host.externalNamingPort;
   watchdogPort_ = freeLoopbackPort();
-  std::string yaml = "robot: tumbot\nhost: 127.0.0.1\nrun_dir: " + dir_ + "/run\nnaming: {host: 127.0.0.1, port: " +
-                     std::to_string(namingPort_) + ", managed: true}\nwatchdog: {port: " +
-                     std::to_string(watchdogPort_) + "}\n" + setYaml + "\nmodules:\n";
+  std::string yaml = "robot: tumbot\nhost: " + address_ + "\nrun_dir: " + dir_ + "/run\nnaming: {host: 127.0.0.1, port: " +
+                     std::to_string(namingPort_) + ", managed: " + (managed ? "true" : "false") +
+                     "}\nwatchdog: {port: " + std::to_string(watchdogPort_) + "}\n" + setYaml + "\nmodules:\n";
   for (const ClusterModule& m : modules) {
     ports_[m.name] = freeLoopbackPort();
     yaml += "  - name: " + m.name + "\n    command: " + yamlList(m.command) + "\n    port: " +
@@ -76,7 +78,7 @@ TestCluster::TestCluster(std::vector<ClusterModule> modules, std::string setYaml
     if (!m.after.empty()) yaml += "    after: " + yamlList(m.after) + "\n";
     if (!m.policyYaml.empty()) yaml += "    " + m.policyYaml + "\n";
   }
-  setFile_ = dir_ + "/cluster.yaml";
+  setFile_ = dir_ + "/" + host.name + ".yaml";
   std::ofstream(setFile_) << yaml;
 }
 
@@ -111,7 +113,7 @@ void TestCluster::stopWatchdog(int signal) {
 }
 
 WatchdogClient& TestCluster::watchdog() {
-  if (!watchdog_) watchdog_ = std::make_unique<WatchdogClient>(HostPort{"127.0.0.1", watchdogPort_}, clientSettings());
+  if (!watchdog_) watchdog_ = std::make_unique<WatchdogClient>(HostPort{address_, watchdogPort_}, clientSettings());
   return *watchdog_;
 }
 

@@ -28,10 +28,18 @@ struct ClusterModule {
   std::string policyYaml = {};       // extra per-module keys, e.g. "max_restarts: 3"
 };
 
+// One host's part: the set's name, the address its servers publish (any 127.x.y.z is a host of
+// its own on loopback), and whether it runs the naming service or uses another host's.
+struct ClusterHost {
+  std::string name = "cluster";
+  std::string address = "127.0.0.1";
+  int externalNamingPort = 0;  // 0: this host's watchdog runs omniNames on 127.0.0.1
+};
+
 class TestCluster {
  public:
   // setYaml: extra top-level YAML (e.g. a "defaults:" block).
-  TestCluster(std::vector<ClusterModule> modules, std::string setYaml = "");
+  TestCluster(std::vector<ClusterModule> modules, std::string setYaml = "", ClusterHost host = {});
   ~TestCluster();
   TestCluster(const TestCluster&) = delete;
   TestCluster& operator=(const TestCluster&) = delete;
@@ -65,6 +73,7 @@ class TestCluster {
 
   std::string dir_;
   std::string setFile_;
+  std::string address_;
   int namingPort_ = 0;
   int watchdogPort_ = 0;
   std::map<std::string, int> ports_;
