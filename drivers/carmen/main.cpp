@@ -4,7 +4,8 @@
 
 #include "core/logs/OpenLog.h"
 #include "core/logs/ReplayMode.h"
-#include "drivers/carmen/PlaybackServants.h"
+#include "drivers/carmen/PlaybackStreams.h"
+#include "servers/sensors/SensorServants.h"
 
 namespace po = boost::program_options;
 
@@ -28,15 +29,15 @@ int main(int argc, char** argv) {
     reader.maxRange = maxRange;
     reader.correctedPosesPath = corrected;
     const rgnav::ReplayMode mode = rgnav::parseReplayMode(speed);
-    auto shared = std::make_shared<rgnav::PlaybackShared>(
+    auto streams = std::make_shared<rgnav::PlaybackStreams>(
         rgnav::openLog(log, reader), mode, buffer,
-        rgnav::PlaybackClock(runtime.server().stateDir, log, rgnav::formatReplayMode(mode)), maxBatch);
-    runtime.onShutdown([shared] { shared->clock.discard(); });
-    runtime.health().addReporter([shared](rgnav::ModuleHealth& health) { reportPlayback(health, shared->playback); });
-    runtime.activate(laserObject, new rgnav::PlaybackLaserImpl(runtime, shared));
-    runtime.activate(baseObject, new rgnav::PlaybackBaseImpl(runtime, shared));
+        rgnav::PlaybackClock(runtime.server().stateDir, log, rgnav::formatReplayMode(mode)));
+    runtime.onShutdown([streams] { streams->clock().discard(); });
+    runtime.health().addReporter([streams](rgnav::ModuleHealth& health) { streams->report(health); });
+    runtime.activate(laserObject, new rgnav::LaserImpl(runtime, streams, maxBatch));
+    runtime.activate(baseObject, new rgnav::BaseImpl(runtime, streams, maxBatch));
     std::cerr << "playback of " << log << " (" << rgnav::formatReplayMode(mode) << ")"
-              << (shared->clock.resumed() ? ", resumed" : "") << " serving on " << runtime.server().endpoint.str()
+              << (streams->clock().resumed() ? ", resumed" : "") << " serving on " << runtime.server().endpoint.str()
               << std::endl;
   });
 }

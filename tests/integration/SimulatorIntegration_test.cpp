@@ -1,0 +1,93 @@
+// The simulator through the real server set: in lock-step on a tour, a consumer gets exactly the
+// scans an in-process simulation with the same seed makes (the servers add nothing and lose
+// nothing), with ground truth per scan; in real time with velocity commands, the robot moves
+// while commanded and stops when the commands lapse.
+#include <cppunit/extensions/HelperMacros.h>
+
+#include <thread>
+
+#include "clientlibs/base/BaseClient.h"
+#include "clientlibs/groundtruth/GroundTruthClient.h"
+#include "core/sim/LoadedWorld.h"
+#include "core/sim/StartPose.h"
+#include "core/sim/TourRun.h"
+#include "tests/integration/IntegrationHelpers.h"
+
+using namespace rgnav;
+using namespace rgnav::testing;
+
+namespace {
+std::string freiburg52() {
+  return TestCluster::shared("data/floorplans/ipa_room_segmentation/test_maps/Freiburg52_scan_furnitures.png");
+}
+
+std::vector<std::string> simulatorCommand(const std::vector<std::string>& extra) {
+  std::vector<std::string> command{TestCluster::program("rgnav-sim"), "--world", freiburg52(), "--seed", "5"};
+  command.insert(command.end(), extra.begin(), extra.end());
+  return command;
+}
+}  // namespace
+
+class SimulatorIntegrationTest : public CppUnit::TestFixture {
+  CPPUNIT_TEST_SUITE(SimulatorIntegrationTest);
+  CPPUNIT_TEST(testLockStepTourServesExactlyTheInProcessScans);
+  CPPUNIT_TEST(testVelocityCommandsDriveAndLapse);
+  CPPUNIT_TEST_SUITE_END();
+
+ public:
+  void testLockStepTourServesExactlyTheInProcessScans() {
+    TestCluster cluster({{"Simulator", simulatorCommand({"--clock", "lockstep", "--tour"}), {"Laser", "Base", "GroundTruth"}}});
+    cluster.start();
+    LaserClient laser(cluster.clientSettings());
+    const std::vector<LaserScan> served = readAllScans(laser, 200);
+
+    const LoadedWorld world = loadWorld(freiburg52());
+    SimulationConfig config;
+    config.seed = 5;
+    const Pose2D start = openestPose(world.grid);
+    Simulation simulation(world.grid, config, start);
+    TourDriver driver(planTour(world.grid, *world.truth, start), PurePursuitConfig{});
+    std::vector<LaserScan> local;
+    runTour(simulation, driver, *world.truth, [&](const SimulationStep& s) { if (s.scan) local.push_back(*s.scan); }, 4 * 3600.0);
+
+    CPPUNIT_ASSERT(served.size() > 1000);
+    CPPUNIT_ASSERT_EQUAL(local.size(), served.size());
+    for (std::size_t i = 0; i < local.size(); i += 97) {
+      CPPUNIT_ASSERT_EQUAL(local[i].id, served[i].id);
+      CPPUNIT_ASSERT(local[i].ranges == served[i].ranges);
+    }
+    GroundTruthClient truth(cluster.clientSettings());
+    CPPUNIT_ASSERT_EQUAL(static_cast<unsigned>(world.truth->roomCount), truth.roomCount());
+    CPPUNIT_ASSERT_EQUAL(world.truth->doors.size(), truth.doorLines().size());
+    const Pose2D pose = truth.truePose(served[500].id);
+    CPPUNIT_ASSERT_DOUBLES_EQUAL(served[500].sensorPose.x, pose.x, 0.5);
+    CPPUNIT_ASSERT(truth.roomAt(pose.x, pose.y) >= -1);
+    CPPUNIT_ASSERT_THROW(truth.truePose(0), InvalidArgumentError);
+    CPPUNIT_ASSERT_THROW(truth.truePose(10000000), NotAvailableError);
+    BaseClient base(cluster.clientSettings());
+    CPPUNIT_ASSERT_THROW(base.setVelocity(0.2, 0.0), NotSupportedError);
+  }
+
+  void testVelocityCommandsDriveAndLapse() {
+    TestCluster cluster({{"Simulator", simulatorCommand({"--clock", "realtime"}), {"Laser", "Base", "GroundTruth"}}});
+    cluster.start();
+    BaseClient base(cluster.clientSettings());
+    auto latestPose = [&] {
+      const auto batch = base.odometrySince(std::max<DataId>(base.latestOdometryId(), 1) - 1, 1);
+      return batch.records.back().pose;
+    };
+    const Pose2D before = latestPose();
+    for (int i = 0; i < 20; ++i) {  // 1 s of commands at 20 Hz
+      base.setVelocity(0.0, 0.5);
+      std::this_thread::sleep_for(std::chrono::milliseconds(50));
+    }
+    const Pose2D turned = latestPose();
+    CPPUNIT_ASSERT(std::abs(normalizeAngle(turned.theta - before.theta)) > 0.1);
+    std::this_thread::sleep_for(std::chrono::milliseconds(1500));  // commands lapse after 0.5 s
+    const Pose2D settled = latestPose();
+    std::this_thread::sleep_for(std::chrono::milliseconds(500));
+    CPPUNIT_ASSERT_DOUBLES_EQUAL(settled.theta, latestPose().theta, 1e-9);
+    CPPUNIT_ASSERT_THROW(base.setVelocity(NAN, 0.0), InvalidArgumentError);
+  }
+};
+CPPUNIT_TEST_SUITE_REGISTRATION(SimulatorIntegrationTest);
