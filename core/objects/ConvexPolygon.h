@@ -1,0 +1,22 @@
+// Convex polygons for comparing object hypotheses: convex hull (Andrew's monotone chain), area,
+// intersection by Sutherland-Hodgman clipping.
+#pragma once
+
+#include <Eigen/Core>
+#include <vector>
+
+namespace rgnav {
+
+// Vertices in counter-clockwise order.
+using Polygon = std::vector<Eigen::Vector2d>;
+
+// The convex hull of `points`, counter-clockwise, without collinear vertices.
+Polygon convexHull(std::vector<Eigen::Vector2d> points);
+
+// Area of a simple polygon given counter-clockwise (negative if clockwise).
+double polygonArea(const Polygon& polygon);
+
+// Area of the intersection of two convex counter-clockwise polygons.
+double intersectionArea(const Polygon& a, const Polygon& b);
+
+}  // namespace rgnav
