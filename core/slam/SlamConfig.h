@@ -1,0 +1,104 @@
+// SlamConfig: every parameter of the scan mapper (thesis 5.2 ScanMapper module), SI units,
+// with defaults tuned on the Intel and Freiburg 079 logs of data/laser/. validate() rejects
+// values that can never work with a ConfigError naming the key.
+#pragma once
+
+#include <cstddef>
+
+namespace rgnav {
+
+// Thesis 5.2: scans are taken into the map only at certain distance or angle intervals.
+struct KeyframeFilterConfig {
+  double minTranslation = 0.2;  // m travelled (odometry) since the last keyframe
+  double minRotation = 0.15;    // rad turned (odometry) since the last keyframe
+};
+
+// Which beams become points, and how their surface normals are estimated.
+struct ScanPointsConfig {
+  double minRange = 0.1;        // m; shorter returns hit the robot itself
+  double maxRange = 30.0;       // m; longer returns are too noisy in angle to help
+  std::size_t normalHalfWindow = 3;  // beams on either side used for a normal
+  double normalRadius = 0.3;    // m; neighbours farther than this from the point are ignored
+  double maxPlanarity = 0.1;    // smallest / largest eigenvalue above this: no normal
+  std::size_t minPoints = 20;   // fewer points: the scan is not registered (odometry only)
+};
+
+// Rasterisation of a reference point set for the correlative search and the nearest-point look-up.
+struct GridConfig {
+  double resolution = 0.05;     // m per cell
+  double sigma = 0.05;          // m; likelihood exp(-d^2 / 2 sigma^2) of distance d to the nearest point
+  double nearestRadius = 0.2;   // m; cells farther from every point have no nearest point
+};
+
+// Gauss-Newton point-to-line refinement.
+struct IcpConfig {
+  std::size_t maxIterations = 20;
+  double maxCorrespondence = 0.2;  // m; farther pairs are not used
+  double huberDelta = 0.02;        // m; residuals beyond this are down-weighted
+  double inlierResidual = 0.05;    // m; points closer than this to their line count as inliers
+  double convergedStep = 1e-5;     // m or rad; a smaller update ends the iteration
+  double pointSigma = 0.03;        // m; standard deviation of one point-to-line residual
+  double effectivePoints = 30.0;   // the information of a match is that of this many independent points
+};
+
+// Odometry error model (standard deviations grow with the motion), for the registration prior
+// and for edges where no registration was possible.
+struct OdometryModelConfig {
+  double translationPerMetre = 0.1;   // m per m travelled
+  double rotationPerRadian = 0.1;     // rad per rad turned
+  double rotationPerMetre = 0.05;     // rad per m travelled
+  double minTranslation = 0.02;       // m
+  double minRotation = 0.01;          // rad
+};
+
+// Registration of each keyframe against the recent keyframes (local registration).
+struct LocalRegistrationConfig {
+  std::size_t windowKeyframes = 8;    // recent keyframes forming the local reference
+  double searchTranslation = 0.4;     // m, half width of the correlative search window
+  double searchRotation = 0.3;        // rad, half width
+  double minScore = 0.3;              // correlative score [0, 1] below which registration fails
+  double minInlierFraction = 0.2;     // of the scan's points after refinement
+  GridConfig grid;
+  OdometryModelConfig odometry;
+};
+
+// Detection and verification of revisits against submaps of older keyframes.
+struct LoopClosureConfig {
+  std::size_t submapKeyframes = 10;       // consecutive keyframes per submap
+  std::size_t excludeRecentKeyframes = 25;  // submaps reaching this close to the current keyframe are not searched
+  double candidateRadius = 5.0;           // m, base distance from the current estimate to a submap's anchor
+  double windowTranslation = 0.5;         // m, correlative search half width right after a loop closure
+  double windowTranslationPerMetre = 0.03;  // m per m travelled since the last loop closure
+  double maxWindowTranslation = 3.0;      // m
+  double windowRotation = 0.1;            // rad
+  double windowRotationPerMetre = 0.005;  // rad per m travelled since the last loop closure
+  double maxWindowRotation = 0.5;         // rad
+  std::size_t maxCandidates = 3;          // nearest submaps searched per keyframe
+  double minScore = 0.6;                  // correlative score a revisit must reach
+  double minInlierFraction = 0.6;         // of the scan's points after refinement
+  std::size_t cachedSubmaps = 24;         // rasterised submaps kept in memory
+  GridConfig grid;
+};
+
+// Pose graph optimisation (Ceres), incremental: run when loop constraints were added.
+struct PoseGraphConfig {
+  double loopLossScale = 3;                  // Cauchy scale on whitened loop residuals
+  std::size_t maxIterations = 50;
+  double functionTolerance = 1e-4;             // relative cost change that ends an optimisation
+  std::size_t keyframesBetweenOptimizations = 20;  // pending loops wait at most this many keyframes
+  double immediateCorrection = 0.1;            // m; a loop moving the current pose more optimises at once
+};
+
+struct SlamConfig {
+  KeyframeFilterConfig filter;
+  ScanPointsConfig points;
+  IcpConfig icp;
+  LocalRegistrationConfig local;
+  LoopClosureConfig loop;
+  PoseGraphConfig graph;
+};
+
+// Throws ConfigError naming the first invalid key.
+void validate(const SlamConfig& config);
+
+}  // namespace rgnav

@@ -1,0 +1,62 @@
+// Debug rendering of ground truth and detections; see DebugImage.h.
+#include "tests/eval/objects/DebugImage.h"
+
+#include <array>
+
+#include "core/sim/world/PngIo.h"
+
+namespace rgnav {
+namespace {
+
+using Colour = std::array<std::uint8_t, 3>;
+constexpr int kScale = 3;
+
+Colour cellColour(const OccupancyGrid& world, const FurnitureTruth& truth, const MatchResult& match, std::size_t cell) {
+  const int blob = truth.blobOfCell[cell];
+  if (blob < 0) return world.cells()[cell] == Cell::Free ? Colour{255, 255, 255} : Colour{90, 90, 90};
+  switch (truth.blobs[static_cast<std::size_t>(blob)].exclusion) {
+    case Exclusion::kSpeck: return {150, 200, 255};
+    case Exclusion::kNotVisible: return {190, 150, 230};
+    case Exclusion::kNone: break;
+  }
+  return match.detectionOfBlob[static_cast<std::size_t>(blob)] >= 0 ? Colour{120, 220, 120} : Colour{240, 60, 60};
+}
+
+Colour outcomeColour(Outcome outcome) {
+  switch (outcome) {
+    case Outcome::kMatch: return {0, 110, 0};
+    case Outcome::kFalse: return {230, 0, 230};
+    case Outcome::kIgnored: return {0, 0, 230};
+  }
+  return {0, 0, 0};
+}
+
+void paint(RgbImage& image, int x, int y, const Colour& c) {
+  for (int k = 0; k < 3; ++k) image.set(x, y, c[static_cast<std::size_t>(k)], k);
+}
+
+}  // namespace
+
+void writeDebugImage(const std::string& path, const OccupancyGrid& world, const FurnitureTruth& truth,
+                     const std::vector<std::vector<std::size_t>>& footprints, const MatchResult& match) {
+  const int w = world.width(), h = world.height();
+  RgbImage image(w * kScale, h * kScale);
+  const auto pixelOf = [&](std::size_t cell) {
+    return std::pair(static_cast<int>(cell % static_cast<std::size_t>(w)) * kScale,
+                     (h - 1 - static_cast<int>(cell / static_cast<std::size_t>(w))) * kScale);
+  };
+  for (std::size_t cell = 0; cell < world.cells().size(); ++cell) {
+    const auto [x, y] = pixelOf(cell);
+    const Colour c = cellColour(world, truth, match, cell);
+    for (int dy = 0; dy < kScale; ++dy)
+      for (int dx = 0; dx < kScale; ++dx) paint(image, x + dx, y + dy, c);
+  }
+  for (std::size_t d = 0; d < footprints.size(); ++d)
+    for (const std::size_t cell : footprints[d]) {
+      const auto [x, y] = pixelOf(cell);
+      paint(image, x + kScale / 2, y + kScale / 2, outcomeColour(match.outcomes[d]));
+    }
+  writePng(path, image);
+}
+
+}  // namespace rgnav

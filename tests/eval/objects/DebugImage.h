@@ -1,0 +1,20 @@
+// writeDebugImage: a PNG of one evaluated map for a person to look at, 3 x 3 pixels per grid
+// cell, north up. Cell fill: white free, dark gray building, ground-truth blobs green (matched),
+// red (missed), light blue (speck, not counted), violet (seen from no reachable place, not
+// counted). The centre pixel of each cell a detection claims: dark green (match), magenta
+// (false detection), blue (ignored).
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "core/sim/OccupancyGrid.h"
+#include "tests/eval/objects/FurnitureTruth.h"
+#include "tests/eval/objects/Matching.h"
+
+namespace rgnav {
+
+void writeDebugImage(const std::string& path, const OccupancyGrid& world, const FurnitureTruth& truth,
+                     const std::vector<std::vector<std::size_t>>& footprints, const MatchResult& match);
+
+}  // namespace rgnav
