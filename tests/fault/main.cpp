@@ -1,14 +1,18 @@
 // rgnav-faulttest: fault injection on a full log replay through the real server set (omniNames
-// + watchdog + log playback + rgnav-cat as consumer). While the log plays, the playback server
-// is SIGKILLed and SIGSTOPped many times and omniNames is killed once; a second module that
-// crashes at every start must end FATAL while the others keep running. The consumer must
-// receive every scan exactly once and in order. Last line:
+// + watchdog + log playback [+ ScanMapper] + rgnav-cat as consumer). While the log plays, the
+// target module (the playback server, or with --target ScanMapper the scan mapper) is SIGKILLed
+// and SIGSTOPped many times and omniNames is killed once; a second module that crashes at every
+// start must end FATAL while the others keep running. The consumer must receive every scan
+// (raw, or corrected) exactly once and in order; with the ScanMapper, every scan's final
+// corrected pose must equal the fault-free run's (the SLAM core in-process) within 1 mm. Last line:
 //   faults: kills=50 stops=5 recovered=55 scans_expected=910 scans_received=910 duplicates=0 ...
 // Exit code 0 only if every check held.
 #include <signal.h>
 #include <sys/wait.h>
 
 #include <algorithm>
+#include <cmath>
+#include <limits>
 #include <cstdio>
 #include <fstream>
 #include <iostream>
@@ -16,7 +20,9 @@
 #include <sstream>
 #include <thread>
 
+#include "clientlibs/scanmapper/ScanMapperClient.h"
 #include "core/logs/OpenLog.h"
+#include "core/slam/ScanMapper.h"
 #include "core/logs/ReplayMode.h"
 #include "tests/support/cluster/TestCluster.h"
 #include "watchdog/Spawn.h"
@@ -30,11 +36,14 @@ using Clock = std::chrono::steady_clock;
 namespace {
 
 struct Options {
+  std::string target = "LogPlayback";
   int kills = 50;
   int stops = 5;
   std::string log;
+  std::string corrected;
   std::string speed = "x60";
   unsigned seed = 7;
+  double toleranceMm = 1.0;
 };
 
 std::size_t scansInLog(const std::string& path) {
@@ -74,6 +83,35 @@ double percentile(std::vector<double> values, double p) {
 
 bool running(const ModuleProcessInfo& m) { return m.state == ProcessState::Running; }
 
+// The fault-free reference: the SLAM core in-process on the same log, as the module runs it.
+std::vector<Pose2D> referencePoses(const std::string& log, const std::string& corrected) {
+  LogReaderOptions reader;
+  reader.correctedPosesPath = corrected;
+  auto source = openLog(log, reader);
+  ScanMapper mapper;
+  while (auto record = source->next())
+    if (const auto* scan = std::get_if<LaserScan>(&*record)) mapper.addScan(*scan);
+  mapper.optimize();
+  std::vector<Pose2D> poses;
+  for (DataId id = 1; id <= mapper.lastInputId(); ++id) poses.push_back(mapper.correctedPose(id));
+  return poses;
+}
+
+// Largest distance (mm) between the module's final poses and the reference; +inf if any is missing.
+double largestPoseDifferenceMm(ScanMapperClient& mapper, const std::vector<Pose2D>& reference) {
+  double largest = 0.0;
+  for (DataId first = 1; first <= reference.size();) {
+    const auto updates = mapper.poses(first, reference.size());
+    if (updates.empty()) return std::numeric_limits<double>::infinity();
+    for (const PoseUpdate& u : updates) {
+      const Pose2D& r = reference[u.id - 1];
+      largest = std::max(largest, 1000.0 * std::hypot(u.corrected.x - r.x, u.corrected.y - r.y));
+    }
+    first = updates.back().id + 1;
+  }
+  return largest;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -82,28 +120,38 @@ int main(int argc, char** argv) {
   po::options_description desc("rgnav-faulttest [options]");
   desc.add_options()
       ("help", "this text")
-      ("kills", po::value(&options.kills)->default_value(options.kills), "SIGKILLs of the playback server")
-      ("stops", po::value(&options.stops)->default_value(options.stops), "SIGSTOPs of the playback server")
+      ("target", po::value(&options.target)->default_value(options.target), "module to hurt: LogPlayback or ScanMapper")
+      ("kills", po::value(&options.kills)->default_value(options.kills), "SIGKILLs of the target")
+      ("stops", po::value(&options.stops)->default_value(options.stops), "SIGSTOPs of the target")
       ("log", po::value(&options.log)->default_value(options.log), "log to replay")
+      ("corrected", po::value(&options.corrected)->default_value(""), "Intel JSON only: the corrected-pose companion")
+      ("tolerance-mm", po::value(&options.toleranceMm)->default_value(options.toleranceMm),
+       "ScanMapper: largest allowed pose difference to the fault-free run")
       ("speed", po::value(&options.speed)->default_value(options.speed), "replay speed (x<k> or realtime)")
       ("seed", po::value(&options.seed)->default_value(options.seed), "seed for the fault schedule");
   try {
     if (!rgnav::parseCommandLine(argc, argv, desc)) return 0;
 
+    const bool mapping = options.target == "ScanMapper";
+    if (!mapping && options.target != "LogPlayback") throw InvalidArgumentError("--target is LogPlayback or ScanMapper");
     const std::size_t expected = scansInLog(options.log);
     const double replaySeconds = logSeconds(options.log) / parseReplayMode(options.speed).speed;
-    TestCluster cluster(
-        {{"LogPlayback",
-          {TestCluster::program("rgnav-carmen-playback"), "--log", options.log, "--speed", options.speed},
-          {"Laser", "Base"}, {}, "max_restarts: 1000"},
-         {"CrashAtStart",
-          {TestCluster::program("rgnav-carmen-playback"), "--log", "/nonexistent/crash-at-start.log"},
-          {"CrashLaser"}, {}, "max_restarts: 3"}},
-        "defaults: {backoff_initial_s: 0.05, backoff_max_s: 0.4}");
-    cluster.start({"LogPlayback"});
+    std::vector<std::string> playback{TestCluster::program("rgnav-carmen-playback"), "--log", options.log, "--speed",
+                                      options.speed};
+    if (!options.corrected.empty()) playback.insert(playback.end(), {"--corrected", options.corrected});
+    std::vector<ClusterModule> modules{
+        {"LogPlayback", playback, {"Laser", "Base"}, {}, "max_restarts: 1000"},
+        {"CrashAtStart", {TestCluster::program("rgnav-carmen-playback"), "--log", "/nonexistent/crash-at-start.log"},
+         {"CrashLaser"}, {}, "max_restarts: 3"}};
+    if (mapping)
+      modules.push_back({"ScanMapper", {TestCluster::program("rgnav-scanmapper")}, {"ScanMapper"}, {"LogPlayback"},
+                         "max_restarts: 1000"});
+    TestCluster cluster(modules, "defaults: {backoff_initial_s: 0.05, backoff_max_s: 0.4}");
+    cluster.start({"LogPlayback", options.target});
 
     SpawnSpec consumer;
-    consumer.argv = {TestCluster::program("rgnav-cat"), "laser", "--quiet", "--record", cluster.dir() + "/received.txt",
+    consumer.argv = {TestCluster::program("rgnav-cat"), mapping ? "corrected" : "laser", "--quiet", "--record",
+                     cluster.dir() + "/received.txt",
                      "--naming", "127.0.0.1:" + std::to_string(cluster.namingPort()), "--retry-budget-ms", "30000"};
     consumer.logFile = cluster.dir() + "/consumer.log";
     consumer.parentDeathSignal = SIGTERM;
@@ -126,11 +174,11 @@ int main(int argc, char** argv) {
                         "restarted");
         ++namingRestarts;
       }
-      const auto victim = cluster.waitFor("LogPlayback", running, "running");
+      const auto victim = cluster.waitFor(options.target, running, "running");
       const auto hit = Clock::now();
       ::kill(static_cast<pid_t>(victim.pid), faults[i]);
       (faults[i] == SIGKILL ? kills : stops)++;
-      cluster.waitFor("LogPlayback", [&](const ModuleProcessInfo& m) { return running(m) && m.pid != victim.pid; },
+      cluster.waitFor(options.target, [&](const ModuleProcessInfo& m) { return running(m) && m.pid != victim.pid; },
                       "restarted");
       recovery.push_back(std::chrono::duration<double>(Clock::now() - hit).count());
       ++recovered;
@@ -157,10 +205,15 @@ int main(int argc, char** argv) {
     }
     const std::size_t distinct = std::count_if(seen.begin(), seen.end(), [](int n) { return n > 0; });
     const auto crash = cluster.describe("CrashAtStart");
-    const auto playback = cluster.describe("LogPlayback");
+    const auto target = cluster.describe(options.target);
     const auto naming = cluster.describe("NameService");
-    const bool othersRun = running(playback) && running(naming);
-    const bool everyFaultRestarted = playback.restarts == static_cast<std::uint32_t>(kills + stops);
+    const bool othersRun = running(cluster.describe("LogPlayback")) && running(target) && running(naming);
+    const bool everyFaultRestarted = target.restarts == static_cast<std::uint32_t>(kills + stops);
+    double poseDifferenceMm = 0.0;
+    if (mapping) {
+      ScanMapperClient mapper(cluster.clientSettings());
+      poseDifferenceMm = largestPoseDifferenceMm(mapper, referencePoses(options.log, options.corrected));
+    }
 
     std::cout << "consumer: " << [&] {
       std::ifstream in(cluster.dir() + "/consumer.log");
@@ -170,15 +223,19 @@ int main(int argc, char** argv) {
     }() << "\n";
     std::cout << "CrashAtStart: " << toString(crash.state) << " after " << crash.restarts
               << " restarts (" << crash.lastEvent << ")\n";
-    std::cout << "LogPlayback: " << toString(playback.state) << ", restarts=" << playback.restarts
+    std::cout << options.target << ": " << toString(target.state) << ", restarts=" << target.restarts
               << "; NameService: " << toString(naming.state) << ", restarts=" << naming.restarts << "\n";
+    if (mapping) std::printf("largest pose difference to the fault-free run: %.4f mm\n", poseDifferenceMm);
     const bool ok = WIFEXITED(status) && WEXITSTATUS(status) == 0 && ids.size() == expected && distinct == expected &&
                     duplicates == 0 && outOfOrder == 0 && recovered == kills + stops &&
-                    crash.state == ProcessState::Fatal && othersRun && everyFaultRestarted && namingRestarts == 1;
-    std::printf("faults: kills=%d stops=%d recovered=%d scans_expected=%zu scans_received=%zu duplicates=%zu "
-                "out_of_order=%zu naming_restarts=%d crash_at_start=%s recovery_p95_s=%.3f result=%s\n",
-                kills, stops, recovered, expected, ids.size(), duplicates, outOfOrder, namingRestarts,
-                toString(crash.state), percentile(recovery, 0.95), ok ? "PASS" : "FAIL");
+                    crash.state == ProcessState::Fatal && othersRun && everyFaultRestarted && namingRestarts == 1 &&
+                    poseDifferenceMm <= options.toleranceMm;
+    std::printf("faults: target=%s kills=%d stops=%d recovered=%d scans_expected=%zu scans_received=%zu "
+                "duplicates=%zu out_of_order=%zu naming_restarts=%d crash_at_start=%s recovery_p95_s=%.3f",
+                options.target.c_str(), kills, stops, recovered, expected, ids.size(), duplicates, outOfOrder,
+                namingRestarts, toString(crash.state), percentile(recovery, 0.95));
+    if (mapping) std::printf(" max_pose_diff_mm=%.4f", poseDifferenceMm);
+    std::printf(" result=%s\n", ok ? "PASS" : "FAIL");
     return ok ? 0 : 1;
   } catch (const po::error& e) {
     std::cerr << "rgnav-faulttest: " << e.what() << "\n" << desc << std::endl;

@@ -34,3 +34,14 @@ std::string formatOdometry(const OdometryReading& odometry) {
 }
 
 }  // namespace rgnav
+
+namespace rgnav {
+
+std::string formatCorrected(const CorrectedScan& scan) {
+  char line[160];
+  std::snprintf(line, sizeof line, "corrected %llu %.6f %.6f %.6f %.6f %d", static_cast<unsigned long long>(scan.scan.id),
+                scan.scan.stamp, scan.corrected.x, scan.corrected.y, scan.corrected.theta, scan.keyframe ? 1 : 0);
+  return line;
+}
+
+}  // namespace rgnav

@@ -3,6 +3,7 @@
 
 #include <string>
 
+#include "clientlibs/scanmapper/CorrectedScans.h"
 #include "core/common/SensorData.h"
 
 namespace rgnav {
@@ -11,5 +12,11 @@ namespace rgnav {
 std::string formatScan(const LaserScan& scan);
 // "odom <id> <stamp> <x> <y> <theta> <tv> <rv>"
 std::string formatOdometry(const OdometryReading& odometry);
+// "corrected <id> <stamp> <x> <y> <theta> <keyframe 0|1>" (the corrected pose in the map frame)
+std::string formatCorrected(const CorrectedScan& scan);
+
+inline DataId recordId(const LaserScan& scan) { return scan.id; }
+inline DataId recordId(const OdometryReading& odometry) { return odometry.id; }
+inline DataId recordId(const CorrectedScan& scan) { return scan.scan.id; }
 
 }  // namespace rgnav

@@ -9,6 +9,7 @@
 
 #include "clientlibs/base/BaseClient.h"
 #include "clientlibs/laser/LaserClient.h"
+#include "clientlibs/scanmapper/ScanMapperClient.h"
 #include "tools/cat/IdSequenceCheck.h"
 #include "tools/cat/RecordFormat.h"
 #include "tools/common/CommandLine.h"
@@ -40,7 +41,7 @@ int follow(const Options& options, Fetch fetch, Format format, const std::functi
   for (;;) {
     const auto batch = fetch(check.last(), options.batch);
     for (const auto& item : batch.records) {
-      check.observe(item.id);
+      check.observe(recordId(item));
       const std::string line = format(item);
       if (!options.quiet) std::cout << line << '\n';
       if (record) record << line << '\n';
@@ -60,10 +61,10 @@ int follow(const Options& options, Fetch fetch, Format format, const std::functi
 int main(int argc, char** argv) {
   Options options;
   std::string naming, robot, consumer;
-  po::options_description desc("rgnav-cat <laser|odometry> [options]");
+  po::options_description desc("rgnav-cat <laser|odometry|corrected> [options]");
   desc.add_options()
       ("help", "this text")
-      ("stream", po::value(&options.stream)->required(), "laser or odometry")
+      ("stream", po::value(&options.stream)->required(), "laser, odometry or corrected (ScanMapper)")
       ("naming", po::value(&naming)->default_value(""), "naming service host:port (default: RGNAV_NAMING or 127.0.0.1:2809)")
       ("robot", po::value(&robot)->default_value(""), "robot name (default: RGNAV_ROBOT or tumbot)")
       ("consumer", po::value(&consumer)->default_value("rgnav-cat"),
@@ -89,12 +90,22 @@ int main(int argc, char** argv) {
       return follow(options, [&](rgnav::DataId after, std::uint32_t n) { return laser.scansSince(after, n); },
                     rgnav::formatScan, [&] { return laser.reconnects(); });
     }
+    if (options.stream == "corrected") {
+      rgnav::ScanMapperClient mapper(settings);
+      return follow(
+          options,
+          [&](rgnav::DataId after, std::uint32_t n) {
+            rgnav::CorrectedBatch batch = mapper.correctedSince(after, n);
+            return rgnav::DataBatch<rgnav::CorrectedScan>{std::move(batch.scans), 0, batch.latestId, batch.endOfData};
+          },
+          rgnav::formatCorrected, [&] { return mapper.reconnects(); });
+    }
     if (options.stream == "odometry") {
       rgnav::BaseClient base(settings);
       return follow(options, [&](rgnav::DataId after, std::uint32_t n) { return base.odometrySince(after, n); },
                     rgnav::formatOdometry, [&] { return base.reconnects(); });
     }
-    throw rgnav::InvalidArgumentError("unknown stream '" + options.stream + "' (laser or odometry)");
+    throw rgnav::InvalidArgumentError("unknown stream '" + options.stream + "' (laser, odometry or corrected)");
   } catch (const po::error& e) {
     std::cerr << "rgnav-cat: " << e.what() << "\n" << desc << std::endl;
   } catch (const std::exception& e) {

@@ -1,0 +1,193 @@
+// The ScanMapper module's follower, buffer and checkpoints (see ScanMapperService.h).
+#include "servers/scanmapper/ScanMapperService.h"
+
+#include <algorithm>
+#include <chrono>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include "clientlibs/common/ClientConnection.h"
+#include "core/common/AtomicFile.h"
+#include "core/slam/SlamStateCodec.h"
+
+namespace rgnav {
+
+namespace {
+
+constexpr auto kIdlePoll = std::chrono::milliseconds(10);
+
+SlamState loadCheckpoint(const std::string& file) {
+  if (file.empty() || !std::filesystem::exists(file)) return {};
+  std::ifstream in(file, std::ios::binary);
+  std::ostringstream bytes;
+  bytes << in.rdbuf();
+  if (!in.good() && !in.eof()) throw FileError(file + ": cannot read the checkpoint");
+  try {
+    return deserializeState(bytes.str());
+  } catch (const CorruptStateError& e) {
+    throw CorruptStateError(file + ": " + e.what());
+  }
+}
+
+}  // namespace
+
+ScanMapperService::ScanMapperService(const SlamConfig& config, const ClientSettings& laserSettings,
+                                     const std::string& laserObject, ScanMapperServiceOptions options, ModuleHealth& health)
+    : options_(std::move(options)),
+      laser_(laserSettings, laserObject),
+      health_(health),
+      mapper_(config, loadCheckpoint(options_.checkpointFile)),
+      scans_(options_.bufferCapacity) {
+  health_.set("resumed_after_scan", mapper_.lastInputId());
+}
+
+ScanMapperService::~ScanMapperService() { stop(); }
+
+void ScanMapperService::start() {
+  follower_ = std::thread([this] { follow(); });
+}
+
+void ScanMapperService::stop() {
+  stopping_ = true;
+  if (follower_.joinable()) follower_.join();
+}
+
+void ScanMapperService::follow() {
+  bool refilled = false;
+  while (!stopping_) {
+    try {
+      if (!refilled) {
+        refillBuffer();
+        refilled = true;
+      }
+      if (!followOnce()) std::this_thread::sleep_for(kIdlePoll);
+      health_.clearError("laser");
+    } catch (const Error& e) {
+      health_.setError("laser", e.what());  // the Laser module is away: keep trying
+      std::this_thread::sleep_for(kIdlePoll * 10);
+    }
+  }
+}
+
+void ScanMapperService::refillBuffer() {
+  DataId last;
+  {
+    std::lock_guard lock(mutex_);
+    last = mapper_.lastInputId();
+  }
+  DataId after = last > options_.bufferCapacity ? last - options_.bufferCapacity : 0;
+  while (after < last && !stopping_) {
+    const auto batch = laser_.scansSince(after, std::min<std::uint32_t>(options_.fetchBatch, static_cast<std::uint32_t>(last - after)));
+    if (batch.records.empty()) break;  // no longer held by the Laser module
+    for (const LaserScan& scan : batch.records) {
+      if (scan.id > last) break;
+      keep(scan);
+      after = scan.id;
+    }
+  }
+}
+
+void ScanMapperService::keep(const LaserScan& scan) {
+  std::lock_guard lock(mutex_);
+  if (!scans_.records().empty() && scan.id != scans_.latestId() + 1) {
+    health_.add("scan_gaps");
+    scans_ = DataBuffer<LaserScan>(options_.bufferCapacity);
+  }
+  scans_.push(scan);
+}
+
+bool ScanMapperService::followOnce() {
+  DataId last;
+  {
+    std::lock_guard lock(mutex_);
+    if (finished_) return false;
+    last = mapper_.lastInputId();
+  }
+  const auto batch = laser_.scansSince(last, options_.fetchBatch);
+  if (batch.records.empty()) {
+    if (batch.endOfData && last >= batch.latestId) {
+      std::lock_guard lock(mutex_);
+      mapper_.optimize();
+      finished_ = true;
+      checkpoint();
+    }
+    return false;
+  }
+  for (const LaserScan& scan : batch.records) {
+    keep(scan);
+    std::lock_guard lock(mutex_);
+    const ScanOutcome outcome = mapper_.addScan(scan);
+    health_.add("scans_mapped");
+    health_.add("keyframes", outcome.keyframe);
+    health_.add("loop_constraints", outcome.loopsAdded);
+  }
+  std::lock_guard lock(mutex_);
+  checkpoint();
+  return true;
+}
+
+void ScanMapperService::checkpoint() {
+  if (options_.checkpointFile.empty()) return;
+  try {
+    writeFileAtomically(options_.checkpointFile, serializeState(mapper_.state()));
+    health_.clearError("checkpoint");
+  } catch (const FileError& e) {
+    health_.setError("checkpoint", e.what());
+  }
+}
+
+bool ScanMapperService::isKeyframe(DataId id) const {
+  const auto& records = mapper_.state().scans;
+  const auto it = std::lower_bound(records.begin(), records.end(), id,
+                                   [](const ScanRecord& r, DataId value) { return r.id < value; });
+  return it != records.end() && it->id == id && it->keyframe != kNoKeyframe;
+}
+
+CorrectedBatch ScanMapperService::correctedSince(DataId afterId, std::size_t maxCount) {
+  std::lock_guard lock(mutex_);
+  CorrectedBatch out;
+  out.latestId = std::min(mapper_.lastInputId(), scans_.latestId());
+  out.revision = mapper_.state().counters.optimizations;
+  for (const LaserScan& scan : scans_.since(afterId, maxCount).records) {
+    if (scan.id > out.latestId) break;
+    out.scans.push_back(CorrectedScan{scan, mapper_.correctedPose(scan.id), isKeyframe(scan.id)});
+  }
+  out.endOfData = finished_ && (out.scans.empty() ? afterId : out.scans.back().scan.id) >= out.latestId;
+  return out;
+}
+
+Pose2D ScanMapperService::correctedPose(DataId id) {
+  if (id == 0) throw InvalidArgumentError("ID 0 names no scan; IDs start at 1");
+  std::lock_guard lock(mutex_);
+  return mapper_.correctedPose(id);
+}
+
+Pose2D ScanMapperService::odomToMap(DataId id, const Pose2D& odometryPose) {
+  if (id == 0) throw InvalidArgumentError("ID 0 names no scan; IDs start at 1");
+  std::lock_guard lock(mutex_);
+  return mapper_.odomToMap(id, odometryPose);
+}
+
+std::vector<PoseUpdate> ScanMapperService::poses(DataId first, DataId last, std::size_t cap) {
+  if (first == 0 || last < first) throw InvalidArgumentError("poses wants 1 <= firstId <= lastId");
+  std::lock_guard lock(mutex_);
+  if (first > mapper_.lastInputId())
+    throw NotAvailableError("no scan after " + std::to_string(mapper_.lastInputId()) + " is mapped yet");
+  std::vector<PoseUpdate> out;
+  for (DataId id = first; id <= std::min(last, mapper_.lastInputId()) && out.size() < cap; ++id)
+    out.push_back(PoseUpdate{id, mapper_.correctedPose(id)});
+  return out;
+}
+
+DataId ScanMapperService::latestCorrectedId() {
+  std::lock_guard lock(mutex_);
+  return mapper_.lastInputId();
+}
+
+std::uint64_t ScanMapperService::revision() {
+  std::lock_guard lock(mutex_);
+  return mapper_.state().counters.optimizations;
+}
+
+}  // namespace rgnav

@@ -1,0 +1,69 @@
+// ScanMapperService: the ScanMapper module's work behind its servant (thesis 5.2): follows the
+// Laser module by ID (as consumer "<module>"), feeds every scan to the SLAM core, keeps the
+// scans it served for consumers, and checkpoints the SLAM state atomically after every batch
+// (DESIGN.md "State survives"). After a restart it reloads the checkpoint, refills its scan
+// buffer from the Laser module and goes on after the last scan the checkpoint holds: the mapper
+// continues bit for bit as if it had not stopped, so no scan is lost or processed twice.
+#pragma once
+
+#include <atomic>
+#include <mutex>
+#include <optional>
+#include <string>
+#include <thread>
+
+#include "clientlibs/laser/LaserClient.h"
+#include "clientlibs/scanmapper/CorrectedScans.h"
+#include "core/common/DataBuffer.h"
+#include "core/slam/ScanMapper.h"
+#include "servers/common/ModuleHealth.h"
+
+namespace rgnav {
+
+struct ScanMapperServiceOptions {
+  std::string checkpointFile;           // empty: no checkpoints
+  std::size_t bufferCapacity = 20000;   // scans held for consumers
+  std::uint32_t fetchBatch = 100;       // scans asked from the Laser module per call
+};
+
+class ScanMapperService {
+ public:
+  // Loads the checkpoint if there is one (CorruptStateError if it is damaged: the module then
+  // fails at start and the operator decides). Does not contact the Laser module yet.
+  ScanMapperService(const SlamConfig& config, const ClientSettings& laserSettings, const std::string& laserObject,
+                    ScanMapperServiceOptions options, ModuleHealth& health);
+  ~ScanMapperService();
+
+  // Starts / stops the thread that follows the Laser module.
+  void start();
+  void stop();
+
+  CorrectedBatch correctedSince(DataId afterId, std::size_t maxCount);
+  // InvalidArgumentError for ID 0, NotAvailableError for a scan not mapped (yet).
+  Pose2D correctedPose(DataId id);
+  Pose2D odomToMap(DataId id, const Pose2D& odometryPose);
+  // Current poses of scans first..last (at most cap of them).
+  std::vector<PoseUpdate> poses(DataId first, DataId last, std::size_t cap);
+  DataId latestCorrectedId();
+  std::uint64_t revision();
+
+ private:
+  void follow();
+  bool followOnce();            // false when there was nothing new
+  void refillBuffer();          // after a restart: the scans the checkpoint covers
+  void keep(const LaserScan& scan);
+  void checkpoint();            // under lock
+  bool isKeyframe(DataId id) const;  // under lock
+
+  ScanMapperServiceOptions options_;
+  LaserClient laser_;
+  ModuleHealth& health_;
+  std::mutex mutex_;
+  ScanMapper mapper_;
+  DataBuffer<LaserScan> scans_;
+  bool finished_ = false;  // the input ended and the final optimisation ran
+  std::atomic<bool> stopping_{false};
+  std::thread follower_;
+};
+
+}  // namespace rgnav
