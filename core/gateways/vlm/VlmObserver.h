@@ -1,0 +1,50 @@
+// VlmObserver: one laser scan to observation vectors, thesis 4.1.1-4.1.2: the line scan
+// (core/lines LineExtractor), virtual lines, depth singularities, VLM hypotheses, and per
+// hypothesis the general measures W_d and W_r, the freespace measures per sector and the
+// weights W(GW, VLM) per gateway class. Everything in the sensor frame of the scan.
+#pragma once
+
+#include <vector>
+
+#include "core/common/SensorData.h"
+#include "core/gateways/vlm/FreespaceMeasures.h"
+#include "core/gateways/vlm/GatewayWeights.h"
+#include "core/gateways/vlm/VirtualLines.h"
+#include "core/gateways/vlm/VlmHypotheses.h"
+#include "core/lines/LineExtractor.h"
+
+namespace rgnav {
+
+struct VlmObserverParams {
+  LineExtractorParams lineExtraction;
+  VirtualLineParams virtualLines;
+  double minSingularityJumpM = 0.5;  // Δd_min (the thesis gives no value)
+  VlmHypothesisParams hypotheses;    // holds d_hw, also used by W_d
+  FreespaceParams freespace;
+  WeightParams weights;
+};
+
+struct VlmObservation {
+  VlmHypothesis hypothesis;
+  double distanceM = 0.0;  // from the sensor to the gateway centre
+  double distanceMeasure = 0.0;        // W_d
+  double rectangularityMeasure = 0.0;  // W_r
+  SectorFreespace freespace;
+  std::vector<double> weights;  // W(GW, VLM) per class of kGatewayClasses
+};
+
+class VlmObserver {
+ public:
+  // Throws InvalidArgumentError for parameters that can never work.
+  explicit VlmObserver(const VlmObserverParams& params = {});
+
+  std::vector<VlmObservation> observe(const LaserScan& scan) const;
+
+  const VlmObserverParams& params() const { return params_; }
+
+ private:
+  VlmObserverParams params_;
+  LineExtractor extractor_;
+};
+
+}  // namespace rgnav

@@ -1,0 +1,87 @@
+// Scoring the classifiers on the crossing data; see Evaluation.h.
+#include "tests/eval/crossings/Evaluation.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "core/common/Errors.h"
+#include "core/gateways/classify/WeightClassifiers.h"
+
+namespace rgnav {
+namespace {
+
+bool is2mCluttered(const HallwayEnvironment& e) { return e.width == 2.0 && e.clutter != ClutterLevel::None; }
+
+void addWeightClassifications(const ClassSequences& test, EnvironmentResults& results) {
+  const GatewayWeightLayout layout = thesisWeightLayout();
+  for (const auto& [truth, sequences] : test) {
+    if (truth == GatewayClass::Hallway) continue;
+    for (const GatewayObservationSequence& s : sequences) {
+      results.asc.add(truth, classifyAveragedSequence(s, layout));
+      results.socLast.add(truth, classifySingleObservation(s, layout, 0));
+      results.socLastButOne.add(truth, classifySingleObservation(s, layout, 1));
+    }
+  }
+}
+
+HmmClassifier pairwiseClassifier(const HmmClassifier& all, GatewayClass a, GatewayClass b) {
+  std::vector<GatewayClassModel> pair;
+  for (const GatewayClass c : {a, b}) {
+    const auto& models = all.models();
+    const auto it =
+        std::find_if(models.begin(), models.end(), [c](const GatewayClassModel& m) { return m.gatewayClass == c; });
+    if (it == models.end())
+      throw NotAvailableError("no HMM for " + std::string(gatewayClassName(c)) + " (no training sequences)");
+    pair.push_back(*it);
+  }
+  return HmmClassifier(std::move(pair));
+}
+
+}  // namespace
+
+void addHmmClassifications(const HmmClassifier& classifier, const ClassSequences& test,
+                           GatewayConfusionMatrix& matrix) {
+  const std::vector<GatewayClass>& classes = matrix.classes();
+  for (const auto& [truth, sequences] : test) {
+    if (std::find(classes.begin(), classes.end(), truth) == classes.end()) continue;
+    for (const GatewayObservationSequence& s : sequences) matrix.add(truth, classifier.classify(s).best());
+  }
+}
+
+std::vector<GatewayClass> gatewayClassesOnly() {
+  std::vector<GatewayClass> classes;
+  for (const GatewayClass c : kGatewayClasses)
+    if (c != GatewayClass::Hallway) classes.push_back(c);
+  return classes;
+}
+
+CrossingResults evaluateCrossings(const CrossingData& data, const HmmClassifier& hmm) {
+  std::vector<HmmClassifier> pairwise;
+  for (const auto& [a, b] : kTable43Pairs) pairwise.push_back(pairwiseClassifier(hmm, a, b));
+  const double none = std::numeric_limits<double>::quiet_NaN();
+  CrossingResults results{{}, GatewayConfusionMatrix(hmm.classes()), GatewayConfusionMatrix(hmm.classes()), none, none};
+  const auto& environments = thesisEnvironments();
+  for (std::size_t e = 0; e < environments.size(); ++e) {
+    const ClassSequences& test = data.environments[e].test;
+    EnvironmentResults& r = results.environments.emplace_back(EnvironmentResults{
+        .hmm = GatewayConfusionMatrix(hmm.classes()), .pairs = {}});
+    addWeightClassifications(test, r);
+    addHmmClassifications(hmm, test, r.hmm);
+    addHmmClassifications(hmm, test, results.hmmAll);
+    for (std::size_t p = 0; p < kTable43Pairs.size(); ++p) {
+      r.pairs.emplace_back(std::vector<GatewayClass>{kTable43Pairs[p].first, kTable43Pairs[p].second});
+      addHmmClassifications(pairwise[p], test, r.pairs.back());
+    }
+    if (!is2mCluttered(environments[e])) continue;
+    addHmmClassifications(hmm, test, results.hmm2mCluttered);
+    const std::vector<GatewayClass>& modelled = r.hmm.classes();
+    for (const GatewayClass c : gatewayClassesOnly())
+      if (std::find(modelled.begin(), modelled.end(), c) != modelled.end() && r.hmm.total(c) > 0)
+        results.hmmMinClassRate2mCluttered = std::fmin(results.hmmMinClassRate2mCluttered, r.hmm.classAccuracy(c));
+  }
+  if (results.hmmAll.total() > 0) results.hmmMeanClassRate = results.hmmAll.meanClassAccuracy();
+  return results;
+}
+
+}  // namespace rgnav

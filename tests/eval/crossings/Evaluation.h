@@ -1,0 +1,56 @@
+// Evaluation: the classifiers of thesis 4.1.3 (rgnav_gateway_classify) scored on the test
+// sequences of the crossing data, per environment. The weight classifiers (SOC on the last and
+// the last but one observation, ASC) ignore the Hallway counter-class as in the thesis and are
+// scored on the seven gateway classes; the multi-class HMM classifier has one model per class
+// with training data (counter-class included) and is scored on every class; a pairwise
+// classifier (table 4.3) holds the HMMs of two classes only and sees test data of those two.
+#pragma once
+
+#include <array>
+#include <utility>
+#include <vector>
+
+#include "core/gateways/classify/GatewayConfusionMatrix.h"
+#include "core/gateways/classify/HmmClassifier.h"
+#include "tests/eval/crossings/CrossingData.h"
+
+namespace rgnav {
+
+// kGatewayClasses without the counter-class Hallway.
+std::vector<GatewayClass> gatewayClassesOnly();
+
+// Adds the HMM decisions for the test sequences of the classes `matrix` holds.
+void addHmmClassifications(const HmmClassifier& classifier, const ClassSequences& test,
+                           GatewayConfusionMatrix& matrix);
+
+// The pairs of table 4.3 (its "tcrossing" is the T-Junction).
+inline constexpr std::array<std::pair<GatewayClass, GatewayClass>, 4> kTable43Pairs{{
+    {GatewayClass::LTurn, GatewayClass::RTurn},
+    {GatewayClass::LTurn, GatewayClass::TJunction},
+    {GatewayClass::RTurn, GatewayClass::TJunction},
+    {GatewayClass::LTurn, GatewayClass::XCrossing},
+}};
+
+struct EnvironmentResults {
+  GatewayConfusionMatrix asc{gatewayClassesOnly()};
+  GatewayConfusionMatrix socLast{gatewayClassesOnly()};
+  GatewayConfusionMatrix socLastButOne{gatewayClassesOnly()};
+  GatewayConfusionMatrix hmm;
+  std::vector<GatewayConfusionMatrix> pairs;  // one per kTable43Pairs entry
+};
+
+struct CrossingResults {
+  std::vector<EnvironmentResults> environments;  // in thesisEnvironments() order
+  GatewayConfusionMatrix hmmAll;                 // every test sequence
+  GatewayConfusionMatrix hmm2mCluttered;         // the 2 m slightly and strongly cluttered ones
+  // The lowest HMM rate of a gateway class (counter-class excluded) in a 2 m cluttered
+  // environment, and the mean per-class HMM rate over all test sequences (counter-class
+  // included); NaN without test sequences.
+  double hmmMinClassRate2mCluttered = 0.0;
+  double hmmMeanClassRate = 0.0;
+};
+
+// Throws NotAvailableError if a class of kTable43Pairs has no HMM (no training sequences).
+CrossingResults evaluateCrossings(const CrossingData& data, const HmmClassifier& hmm);
+
+}  // namespace rgnav

@@ -1,0 +1,96 @@
+// rgnav-eval-crossings: the turn and crossing classification experiments of thesis 4.1.4
+// (issue 6). Generates the labelled hallway scenarios of the eight environments (seeded),
+// records observation sequences with the VLM observer and tracker (rgnav_gateway_vlm), splits
+// them by clutter layout into training, validation and test data, chooses the HMM training
+// configuration on the validation data (HmmSelection), trains the HMMs on all training data and
+// prints table 4.2 (SOC last, SOC last but one, ASC, plus the multi-class HMM; with the number
+// of test sequences out of the approaches driven), table 4.3 (pairwise HMMs) and the full
+// multi-class HMM confusion matrices, then
+//   crossings: hmm_min_class_acc_2m_cluttered=… hmm_mean_acc=…
+// hmm_min_class_acc_2m_cluttered: the lowest HMM recognition rate of the seven gateway classes
+// (Hallway, the counter-class, excluded) in the 2 m slightly and strongly cluttered environments;
+// hmm_mean_acc: the mean per-class HMM rate over all test sequences, counter-class included.
+// Where we differ from the thesis: one set of HMMs is trained on the training data of all eight
+// environments together (the thesis trained per environment and found that hard across
+// environments), and the multi-class confusion matrix is printed, which the thesis could not.
+#include <chrono>
+#include <cstdio>
+#include <iostream>
+
+#include "tests/eval/crossings/CrossingData.h"
+#include "tests/eval/crossings/Evaluation.h"
+#include "tests/eval/crossings/HmmSelection.h"
+#include "tests/eval/crossings/Tables.h"
+#include "tools/common/CommandLine.h"
+
+namespace po = boost::program_options;
+using namespace rgnav;
+
+namespace {
+
+double secondsSince(std::chrono::steady_clock::time_point start) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+std::size_t countOf(const ClassSequences& sequences) {
+  std::size_t n = 0;
+  for (const auto& [c, s] : sequences) n += s.size();
+  return n;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  std::uint64_t seed = 1;
+  int layouts = 30;
+  int threads = 2;
+  po::options_description desc("rgnav-eval-crossings [options]");
+  desc.add_options()
+      ("help", "this text")
+      ("seed", po::value(&seed)->default_value(seed), "seed of the clutter layouts and the laser noise")
+      ("layouts", po::value(&layouts)->default_value(layouts),
+       "clutter layouts per environment and class (odd ones test, even ones train and validate)")
+      ("threads", po::value(&threads)->default_value(threads), "threads that generate sequences and train HMMs");
+  try {
+    if (!parseCommandLine(argc, argv, desc)) return 0;
+    const auto start = std::chrono::steady_clock::now();
+    const CrossingsSetup setup;
+    const CrossingData data = generateCrossingData(seed, layouts, setup, threads);
+    ClassSequences fit, validation;
+    std::size_t test = 0;
+    for (const EnvironmentData& e : data.environments) {
+      fit = merged(std::move(fit), e.fit);
+      validation = merged(std::move(validation), e.validation);
+      test += countOf(e.test);
+    }
+    std::printf("generated: seed=%llu layouts=%d sequences=%zu (fit %zu, validation %zu, test %zu) observations=%zu "
+                "in %.0f s\n\n",
+                static_cast<unsigned long long>(seed), layouts, data.sequences, countOf(fit), countOf(validation), test,
+                data.observations, secondsSince(start));
+
+    const auto trainStart = std::chrono::steady_clock::now();
+    std::vector<HmmCandidate> candidates = hmmCandidates();
+    const std::size_t chosen = selectHmmCandidate(candidates, fit, validation, threads);
+    std::printf("HMM configuration (validation: mean per-class rate of HMMs trained on the fit part)\n");
+    for (std::size_t i = 0; i < candidates.size(); ++i)
+      std::printf("  clusters=%ld noise=%.2f validation=%.3f%s\n", static_cast<long>(candidates[i].config.clusters),
+                  candidates[i].config.noiseStdDev, candidates[i].validationAccuracy, i == chosen ? "  <- chosen" : "");
+    const HmmClassifier hmm = trainHmmClassifier(merged(fit, validation), candidates[chosen].config);
+    std::printf("trained: %zu HMMs on the training data (fit + validation) of all environments; selection and "
+                "training took %.0f s\n\n",
+                hmm.models().size(), secondsSince(trainStart));
+
+    const CrossingResults results = evaluateCrossings(data, hmm);
+    printTable42(std::cout, data, results);
+    printTable43(std::cout, results);
+    printConfusionMatrices(std::cout, results);
+    std::printf("crossings: hmm_min_class_acc_2m_cluttered=%.3f hmm_mean_acc=%.3f\n", results.hmmMinClassRate2mCluttered,
+                results.hmmMeanClassRate);
+    return 0;
+  } catch (const po::error& e) {
+    std::cerr << "rgnav-eval-crossings: " << e.what() << "\n" << desc << std::endl;
+  } catch (const std::exception& e) {
+    std::cerr << "rgnav-eval-crossings: " << e.what() << std::endl;
+  }
+  return 2;
+}
