@@ -38,7 +38,8 @@ void paint(RgbImage& image, int x, int y, const Colour& c) {
 }  // namespace
 
 void writeDebugImage(const std::string& path, const OccupancyGrid& world, const FurnitureTruth& truth,
-                     const std::vector<std::vector<std::size_t>>& footprints, const MatchResult& match) {
+                     const std::vector<Detection>& detections, const MatchResult& match,
+                     const std::vector<bool>& hitCells) {
   const int w = world.width(), h = world.height();
   RgbImage image(w * kScale, h * kScale);
   const auto pixelOf = [&](std::size_t cell) {
@@ -50,9 +51,10 @@ void writeDebugImage(const std::string& path, const OccupancyGrid& world, const 
     const Colour c = cellColour(world, truth, match, cell);
     for (int dy = 0; dy < kScale; ++dy)
       for (int dx = 0; dx < kScale; ++dx) paint(image, x + dx, y + dy, c);
+    if (hitCells[cell]) paint(image, x, y, {0, 0, 0});
   }
-  for (std::size_t d = 0; d < footprints.size(); ++d)
-    for (const std::size_t cell : footprints[d]) {
+  for (std::size_t d = 0; d < detections.size(); ++d)
+    for (const std::size_t cell : detections[d].cells) {
       const auto [x, y] = pixelOf(cell);
       paint(image, x + kScale / 2, y + kScale / 2, outcomeColour(match.outcomes[d]));
     }

@@ -2,7 +2,8 @@
 // cell, north up. Cell fill: white free, dark gray building, ground-truth blobs green (matched),
 // red (missed), light blue (speck, not counted), violet (seen from no reachable place, not
 // counted). The centre pixel of each cell a detection claims: dark green (match), magenta
-// (false detection), blue (ignored).
+// (false detection), blue (ignored). The top-left pixel of each cell a laser return fell into:
+// black.
 #pragma once
 
 #include <string>
@@ -15,6 +16,7 @@
 namespace rgnav {
 
 void writeDebugImage(const std::string& path, const OccupancyGrid& world, const FurnitureTruth& truth,
-                     const std::vector<std::vector<std::size_t>>& footprints, const MatchResult& match);
+                     const std::vector<Detection>& detections, const MatchResult& match,
+                     const std::vector<bool>& hitCells);
 
 }  // namespace rgnav

@@ -26,7 +26,8 @@ bool insideConvex(const Polygon& polygon, const Eigen::Vector2d& p, double margi
   return true;
 }
 
-std::vector<std::size_t> footprint(const Detection& detection, const OccupancyGrid& grid) {
+std::vector<std::size_t> rasterize(const Polygon& outline, const std::vector<Eigen::Vector2d>& anchors,
+                                   const OccupancyGrid& grid) {
   std::vector<std::size_t> cells;
   const auto add = [&](CellIndex c) {
     if (grid.contains(c)) cells.push_back(static_cast<std::size_t>(c.row) * grid.width() + c.col);
@@ -35,17 +36,17 @@ std::vector<std::size_t> footprint(const Detection& detection, const OccupancyGr
     return CellIndex{static_cast<int>(std::floor((p.x() - grid.origin().x) / grid.resolution())),
                      static_cast<int>(std::floor((p.y() - grid.origin().y) / grid.resolution()))};
   };
-  if (!detection.outline.empty()) {
-    Eigen::Vector2d lo = detection.outline.front(), hi = lo;
-    for (const auto& v : detection.outline) lo = lo.cwiseMin(v), hi = hi.cwiseMax(v);
+  if (!outline.empty()) {
+    Eigen::Vector2d lo = outline.front(), hi = lo;
+    for (const auto& v : outline) lo = lo.cwiseMin(v), hi = hi.cwiseMax(v);
     const CellIndex a = cellOf(lo), b = cellOf(hi);
     for (int row = a.row; row <= b.row; ++row)
       for (int col = a.col; col <= b.col; ++col) {
         const WorldPoint c = grid.center({col, row});
-        if (insideConvex(detection.outline, {c.x, c.y}, 0.0)) add({col, row});
+        if (insideConvex(outline, {c.x, c.y}, 0.0)) add({col, row});
       }
   }
-  for (const auto& p : detection.anchors) add(cellOf(p));
+  for (const auto& p : anchors) add(cellOf(p));
   std::sort(cells.begin(), cells.end());
   cells.erase(std::unique(cells.begin(), cells.end()), cells.end());
   return cells;

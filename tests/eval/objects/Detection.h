@@ -1,6 +1,5 @@
 // Detection: one 2D object hypothesis of the evaluation, whatever found it, with the footprint
-// it claims in the map grid: the cells whose centres lie inside its outline, plus the cells of
-// its anchor points (so a detection of a 5 cm table leg claims at least the cell it was seen in).
+// it claims in the map grid (what is matched against the ground truth).
 #pragma once
 
 #include <Eigen/Core>
@@ -19,13 +18,15 @@ std::string kindName(DetectionKind kind);
 
 struct Detection {
   DetectionKind kind = DetectionKind::kCluster;
-  Polygon outline;                        // convex, counter-clockwise, world metres
-  std::vector<Eigen::Vector2d> anchors;   // world metres
-  double score = 0.0;                     // higher is better (confidence or support)
+  Polygon outline;                 // convex, counter-clockwise, world metres
+  std::vector<std::size_t> cells;  // the footprint: row-major grid cell indices, ascending
+  double score = 0.0;              // higher is better (confidence or support)
 };
 
-// Row-major cell indices of `grid` the detection claims, ascending, without duplicates.
-std::vector<std::size_t> footprint(const Detection& detection, const OccupancyGrid& grid);
+// The cells of `grid` whose centres lie inside `outline`, and those holding one of `anchors`
+// (so that even a 5 cm table leg claims the cell it was seen in): row-major, ascending, unique.
+std::vector<std::size_t> rasterize(const Polygon& outline, const std::vector<Eigen::Vector2d>& anchors,
+                                   const OccupancyGrid& grid);
 
 // True if `p` lies inside the convex counter-clockwise `polygon` grown by `marginM`.
 bool insideConvex(const Polygon& polygon, const Eigen::Vector2d& p, double marginM);

@@ -7,22 +7,21 @@
 
 namespace rgnav {
 
-MatchResult matchDetections(const std::vector<Detection>& detections,
-                            const std::vector<std::vector<std::size_t>>& footprints, const FurnitureTruth& truth,
-                            double minIoU) {
+MatchResult matchDetections(const std::vector<Detection>& detections, const FurnitureTruth& truth, double minIoU) {
   struct Pair {
     double iou;
     std::size_t detection;
     int blob;
   };
   std::vector<Pair> pairs;
-  for (std::size_t d = 0; d < footprints.size(); ++d) {
+  for (std::size_t d = 0; d < detections.size(); ++d) {
+    const std::vector<std::size_t>& cells = detections[d].cells;
     std::map<int, std::size_t> shared;
-    for (const std::size_t cell : footprints[d])
+    for (const std::size_t cell : cells)
       if (const int blob = truth.blobOfCell[cell]; blob >= 0) ++shared[blob];
     for (const auto& [blob, n] : shared) {
-      const double iou = static_cast<double>(n) /
-                         static_cast<double>(footprints[d].size() + truth.blobs[static_cast<std::size_t>(blob)].cells.size() - n);
+      const std::size_t blobCells = truth.blobs[static_cast<std::size_t>(blob)].cells.size();
+      const double iou = static_cast<double>(n) / static_cast<double>(cells.size() + blobCells - n);
       if (iou >= minIoU) pairs.push_back({iou, d, blob});
     }
   }

@@ -26,9 +26,6 @@ struct MatchResult {
   std::array<std::size_t, kDetectionKinds> matchesByKind{};
 };
 
-// footprints[i] is the cell set of detections[i] (sorted row-major indices).
-MatchResult matchDetections(const std::vector<Detection>& detections,
-                            const std::vector<std::vector<std::size_t>>& footprints, const FurnitureTruth& truth,
-                            double minIoU);
+MatchResult matchDetections(const std::vector<Detection>& detections, const FurnitureTruth& truth, double minIoU);
 
 }  // namespace rgnav

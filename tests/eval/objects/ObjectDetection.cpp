@@ -3,11 +3,13 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 
+#include "core/lines/PointMoments.h"
 #include "core/lines/RegionLineMap.h"
 #include "core/objects/OverlapSuppression.h"
 #include "core/objects/PointClustering.h"
-#include "tests/eval/objects/FreeSpace.h"
+#include "tests/eval/objects/BeamEvidence.h"
 #include "tests/eval/objects/PointCloud.h"
 #include "tests/eval/objects/StructureLines.h"
 
@@ -26,10 +28,15 @@ Polygon circleOutline(const Circle2D& c) {
   return polygon;
 }
 
-bool seenThrough(const Detection& d, const OccupancyGrid& geometry, const FreeSpace& free, double maxShare) {
-  const std::vector<std::size_t> cells = footprint(d, geometry);
-  const auto seen = std::count_if(cells.begin(), cells.end(), [&](std::size_t c) { return free.seenFree(c); });
-  return static_cast<double>(seen) > maxShare * static_cast<double>(cells.size());
+Detection shapeDetection(DetectionKind kind, Polygon outline, const Eigen::Vector2d& centre, double score,
+                         const OccupancyGrid& geometry) {
+  std::vector<std::size_t> cells = rasterize(outline, {centre}, geometry);
+  return {kind, std::move(outline), std::move(cells), score};
+}
+
+bool seenThrough(const Detection& d, const BeamEvidence& beams, double maxShare) {
+  const auto seen = std::count_if(d.cells.begin(), d.cells.end(), [&](std::size_t c) { return beams.seenFree(c); });
+  return static_cast<double>(seen) > maxShare * static_cast<double>(d.cells.size());
 }
 
 bool onAny(const std::vector<Detection>& kept, const Eigen::Vector2d& p, double margin) {
@@ -43,27 +50,76 @@ double extent(const std::vector<Eigen::Vector2d>& points) {
   return (hi - lo).norm();
 }
 
+// True if the sensor moved or turned enough since `last` for the scan to add to a line map.
+bool isKeyScan(const LaserScan& scan, const LaserScan* last, const ObjectDetectionParams& params) {
+  if (last == nullptr) return true;
+  const Pose2D d = between(last->sensorPose, scan.sensorPose);
+  return std::hypot(d.x, d.y) >= params.keyScanDistanceM || std::fabs(d.theta) >= params.keyScanAngleRad;
+}
+
 // Rectangles of every room's line map that the laser did not see through, duplicates removed.
-std::vector<Detection> keptRectangles(const std::vector<Detection>& candidates, const OccupancyGrid& geometry,
-                                      const FreeSpace& free, double maxShare) {
+std::vector<Detection> keptRectangles(const std::vector<Detection>& candidates, const BeamEvidence& beams,
+                                      double maxShare) {
   std::vector<Detection> solid;
   std::vector<Polygon> outlines;
   std::vector<double> scores;
   for (const Detection& d : candidates)
-    if (!seenThrough(d, geometry, free, maxShare)) {
+    if (!seenThrough(d, beams, maxShare)) {
       solid.push_back(d);
       outlines.push_back(d.outline);
       scores.push_back(d.score);
     }
   std::vector<Detection> kept;
-  for (const std::size_t i : suppressOverlaps(outlines, scores, OverlapMeasure::kIntersectionOverUnion, kMaxDuplicateIoU))
+  for (const std::size_t i :
+       suppressOverlaps(outlines, scores, OverlapMeasure::kIntersectionOverUnion, kMaxDuplicateIoU))
     kept.push_back(solid[i]);
   return kept;
 }
 
+// Circles among the object points (clustered as the CircleDetector clusters them, so that each
+// circle's points are known) that the laser did not see through, that are round (a straight line
+// through their points fits clearly worse: a wall end seen head-on is flat) and that do not lie
+// on a kept rectangle.
+std::vector<Detection> keptCircles(const std::vector<Eigen::Vector2d>& objectPoints, const std::vector<Detection>& kept,
+                                   const BeamEvidence& beams, const OccupancyGrid& geometry,
+                                   const ObjectDetectionParams& params) {
+  const CircleDetector detector(params.circles);
+  std::vector<Detection> circles;
+  std::vector<Eigen::Vector2d> cluster;
+  for (const auto& members : clusterPoints(objectPoints, params.circles.clusterGapM)) {
+    if (members.size() < params.circles.minPoints) continue;
+    cluster.clear();
+    PointMoments moments;
+    for (const std::size_t i : members) {
+      cluster.push_back(objectPoints[i]);
+      moments.add(objectPoints[i]);
+    }
+    for (const Circle2D& c : detector.detect(cluster)) {
+      if (moments.fitLine().rmsResidualM < params.minLineToCircleResidual * c.rmsResidualM) continue;
+      Detection d = shapeDetection(DetectionKind::kCircle, circleOutline(c), c.center, c.confidence, geometry);
+      if (!seenThrough(d, beams, params.maxSeenFreeShare) && !onAny(kept, c.center, params.onObjectMarginM))
+        circles.push_back(std::move(d));
+    }
+  }
+  return circles;
+}
+
+// A small object from its pushed points: the cells of their hull and of the points themselves
+// that the laser did not see free.
+std::optional<Detection> smallObject(const std::vector<Eigen::Vector2d>& pushed, const BeamEvidence& beams,
+                                     const OccupancyGrid& geometry, int hiddenSteps) {
+  Polygon hull = convexHull(pushed);
+  std::vector<std::size_t> cells = rasterize(hull, pushed, geometry);
+  std::erase_if(cells, [&](std::size_t c) { return beams.seenFree(c); });
+  if (cells.empty()) return std::nullopt;
+  cells = beams.growIntoUnobserved(std::move(cells), hiddenSteps);
+  return Detection{DetectionKind::kCluster, std::move(hull), std::move(cells), static_cast<double>(pushed.size())};
+}
+
 // Small isolated objects among the cloud points not explained by `kept` objects.
 void addSmallObjects(const std::vector<CloudPoint>& points, const std::vector<bool>& onStructure,
-                     const ObjectDetectionParams& params, std::vector<Detection>& kept) {
+                     const BeamEvidence& beams, const OccupancyGrid& geometry, const ObjectDetectionParams& params,
+                     std::vector<Detection>& kept) {
   std::vector<std::size_t> rest;
   std::vector<Eigen::Vector2d> surfaces;
   for (std::size_t i = 0; i < points.size(); ++i)
@@ -81,7 +137,7 @@ void addSmallObjects(const std::vector<CloudPoint>& points, const std::vector<bo
       std::vector<Eigen::Vector2d> members;
       for (const std::size_t k : object) members.push_back(pushed[k]);
       if (extent(members) > params.maxClusterExtentM) continue;
-      small.push_back({DetectionKind::kCluster, convexHull(members), members, static_cast<double>(members.size())});
+      if (auto d = smallObject(members, beams, geometry, params.hiddenSteps)) small.push_back(std::move(*d));
     }
   }
   kept.insert(kept.end(), small.begin(), small.end());
@@ -93,33 +149,36 @@ DetectionSummary detectObjects(const TourScans& tour, const OccupancyGrid& geome
                                const ObjectDetectionParams& params) {
   DetectionSummary out;
   const RectangleDetector rectangleDetector(params.rectangles);
-  StructureLines structure(params.structureDistanceM);
+  StructureLines structure(params.structureDistanceM, params.structureExtensionM);
   PointCloud cloud(geometry.resolution());
-  FreeSpace free(geometry);
+  BeamEvidence beams(geometry);
   std::vector<Detection> rectangleCandidates;
   for (const std::vector<LaserScan>& scans : tour.byRoom) {
     RegionLineMap map;
-    for (std::size_t i = 0; i < scans.size(); ++i) {
-      map.addScan(scans[i], scans[i].sensorPose);
-      cloud.add(scans[i]);
-      if (i % params.freeSpaceScanStride == 0) free.add(scans[i]);
+    const LaserScan* last = nullptr;
+    for (const LaserScan& scan : scans) {
+      if (isKeyScan(scan, last, params)) {
+        map.addScan(scan, scan.sensorPose);
+        last = &scan;
+      }
+      cloud.add(scan);
+      beams.add(scan);
     }
     out.scans += scans.size();
+    out.keyScans += map.scanCount();
     out.mapLines += map.lines().size();
     for (const LineSegment& line : map.lines())
-      if (line.length() >= params.structureLengthM) structure.add(line);
+      if (line.length() >= params.structureLengthM && line.support() >= params.structureSupport) structure.add(line);
     for (const Rectangle2D& r : rectangleDetector.detect(map.lines()))
-      rectangleCandidates.push_back(
-          {DetectionKind::kRectangle, rectangleOutline(r), {Eigen::Vector2d(r.pose.x, r.pose.y)}, r.confidence});
+      if (r.lengthM <= params.maxAspectRatio * r.widthM)
+        rectangleCandidates.push_back(shapeDetection(DetectionKind::kRectangle, rectangleOutline(r),
+                                                   Eigen::Vector2d(r.pose.x, r.pose.y), r.confidence, geometry));
   }
   const std::vector<CloudPoint>& points = cloud.points();
-  out.cloudPoints = points.size();
-  out.hitCells.assign(geometry.cells().size(), false);
-  for (const CloudPoint& p : points)
-    if (const auto c = geometry.cellOf({p.pushed.x(), p.pushed.y()}))
-      out.hitCells[static_cast<std::size_t>(c->row) * geometry.width() + c->col] = true;
+  out.hitCells.resize(geometry.cells().size());
+  for (std::size_t c = 0; c < out.hitCells.size(); ++c) out.hitCells[c] = beams.hit(c);
 
-  std::vector<Detection> kept = keptRectangles(rectangleCandidates, geometry, free, params.maxSeenFreeShare);
+  std::vector<Detection> kept = keptRectangles(rectangleCandidates, beams, params.maxSeenFreeShare);
 
   std::vector<bool> onStructure(points.size());
   std::vector<Eigen::Vector2d> objectPoints;
@@ -127,14 +186,9 @@ DetectionSummary detectObjects(const TourScans& tour, const OccupancyGrid& geome
     onStructure[i] = structure.onLine(points[i].surface);
     if (!onStructure[i]) objectPoints.push_back(points[i].surface);
   }
-  std::vector<Detection> circles;
-  for (const Circle2D& c : CircleDetector(params.circles).detect(objectPoints)) {
-    const Detection d{DetectionKind::kCircle, circleOutline(c), {c.center}, c.confidence};
-    if (!seenThrough(d, geometry, free, params.maxSeenFreeShare) && !onAny(kept, c.center, params.onObjectMarginM))
-      circles.push_back(d);
-  }
+  const std::vector<Detection> circles = keptCircles(objectPoints, kept, beams, geometry, params);
   kept.insert(kept.end(), circles.begin(), circles.end());
-  addSmallObjects(points, onStructure, params, kept);
+  addSmallObjects(points, onStructure, beams, geometry, params, kept);
   out.detections = std::move(kept);
   return out;
 }

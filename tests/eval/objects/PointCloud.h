@@ -20,7 +20,7 @@ struct CloudPoint {
 
 class PointCloud {
  public:
-  PointCloud(double cellSizeM, double thinningM = 0.01);
+  explicit PointCloud(double cellSizeM, double thinningM = 0.01);
 
   // Adds the valid points of `scan`, taken at its sensorPose.
   void add(const LaserScan& scan);
