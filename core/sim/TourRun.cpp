@@ -3,6 +3,8 @@
 
 #include <cmath>
 
+#include "core/sim/StartPose.h"
+
 namespace rgnav {
 
 TourRunResult runTour(Simulation& simulation, TourDriver& driver, const GroundTruth& truth, const StepSink& sink,
@@ -27,6 +29,17 @@ TourRunResult runTour(Simulation& simulation, TourDriver& driver, const GroundTr
   result.collisions = simulation.collisions();
   result.seconds = simulation.time() - start;
   return result;
+}
+
+RoomTour driveRoomTour(const OccupancyGrid& grid, const GroundTruth& truth, const SimulationConfig& config,
+                       const StepSink& sink, double maxSeconds) {
+  RoomTour tour;
+  tour.start = openestPose(grid);
+  tour.plan = planTour(grid, truth, tour.start);
+  Simulation simulation(grid, config, tour.start);
+  TourDriver driver(tour.plan, PurePursuitConfig{});
+  tour.run = runTour(simulation, driver, truth, sink, maxSeconds);
+  return tour;
 }
 
 }  // namespace rgnav

@@ -31,4 +31,15 @@ using StepSink = std::function<void(const SimulationStep&)>;
 TourRunResult runTour(Simulation& simulation, TourDriver& driver, const GroundTruth& truth, const StepSink& sink,
                       double maxSeconds);
 
+// The standard room tour of a world with ground truth, as every tool and evaluation drives it:
+// from the free cell farthest from walls, planned and followed with the default settings.
+struct RoomTour {
+  Pose2D start;
+  Tour plan;
+  TourRunResult run;
+};
+inline constexpr double kRoomTourMaxSeconds = 4 * 3600.0;
+RoomTour driveRoomTour(const OccupancyGrid& grid, const GroundTruth& truth, const SimulationConfig& config,
+                       const StepSink& sink, double maxSeconds = kRoomTourMaxSeconds);
+
 }  // namespace rgnav

@@ -9,7 +9,6 @@
 #include "clientlibs/base/BaseClient.h"
 #include "clientlibs/groundtruth/GroundTruthClient.h"
 #include "core/sim/LoadedWorld.h"
-#include "core/sim/StartPose.h"
 #include "core/sim/TourRun.h"
 #include "tests/integration/IntegrationHelpers.h"
 
@@ -44,11 +43,8 @@ class SimulatorIntegrationTest : public CppUnit::TestFixture {
     const LoadedWorld world = loadWorld(freiburg52());
     SimulationConfig config;
     config.seed = 5;
-    const Pose2D start = openestPose(world.grid);
-    Simulation simulation(world.grid, config, start);
-    TourDriver driver(planTour(world.grid, *world.truth, start), PurePursuitConfig{});
     std::vector<LaserScan> local;
-    runTour(simulation, driver, *world.truth, [&](const SimulationStep& s) { if (s.scan) local.push_back(*s.scan); }, 4 * 3600.0);
+    driveRoomTour(world.grid, *world.truth, config, [&](const SimulationStep& s) { if (s.scan) local.push_back(*s.scan); });
 
     CPPUNIT_ASSERT(served.size() > 1000);
     CPPUNIT_ASSERT_EQUAL(local.size(), served.size());

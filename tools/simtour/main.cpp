@@ -11,7 +11,6 @@
 
 #include "core/sim/TourRun.h"
 #include "core/sim/motion/CarmenLogWriter.h"
-#include "core/sim/StartPose.h"
 #include "core/sim/LoadedWorld.h"
 #include "tools/common/CommandLine.h"
 
@@ -45,19 +44,14 @@ int main(int argc, char** argv) {
       const std::string name = ipaFilesOf(map).name;
       SimulationConfig config;
       config.seed = seed;
-      const Pose2D start = openestPose(grid);
-      const Tour tour = planTour(grid, truth, start);
-      Simulation simulation(grid, config, start);
       std::ofstream log(outDir + "/" + name + ".log");
       CarmenLogWriter writer(log);
-      TourDriver driver(tour, PurePursuitConfig{});
-      const TourRunResult run = runTour(
-          simulation, driver, truth,
-          [&](const SimulationStep& step) {
-            writer.write(step.odometry);
-            if (step.scan) writer.write(*step.scan);
-          },
-          /*maxSeconds=*/4 * 3600.0);
+      const RoomTour roomTour = driveRoomTour(grid, truth, config, [&](const SimulationStep& step) {
+        writer.write(step.odometry);
+        if (step.scan) writer.write(*step.scan);
+      });
+      const Tour& tour = roomTour.plan;
+      const TourRunResult& run = roomTour.run;
       std::printf("%-32s %6d %9zu %7zu %11zu %10llu %8llu %8.0fm\n", name.c_str(), truth.roomCount,
                   tour.visits.size(), run.roomsVisited.size(), tour.unreachableRooms.size(),
                   static_cast<unsigned long long>(run.collisions), static_cast<unsigned long long>(run.scans),
