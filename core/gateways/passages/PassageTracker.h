@@ -1,0 +1,96 @@
+// PassageTracker: fuses narrow-passage hypotheses of consecutive scans (poses given, e.g. the
+// corrected poses of the scan mapper) into gateways, and reports when the robot traverses one.
+// The thesis (4.2.1, 5.2) keeps a buffer of hypotheses for the RG mapping kernel but gives no
+// tracking method; this one is ours:
+//   - association: a hypothesis belongs to the track whose mean gateway points are nearest, if
+//     both of its points lie within associationDistanceM of them (in either order: a door seen
+//     from its other side has left and right swapped); otherwise it starts a new track;
+//   - support: the number of scans with at least one associated hypothesis; a track with
+//     minSupport scans is confirmed, i.e. reported as a gateway;
+//   - an unconfirmed track without support in the last forgetAfterUpdates updates is dropped;
+//   - traversal: the robot's path from the previous update's pose to this one crosses the
+//     segment between a confirmed gateway's points.
+#pragma once
+
+#include <Eigen/Core>
+#include <cstddef>
+#include <cstdint>
+#include <vector>
+
+#include "core/common/Pose2D.h"
+#include "core/gateways/passages/PassageHypothesis.h"
+
+namespace rgnav {
+
+using GatewayId = std::uint64_t;
+
+struct PassageTrackerConfig {
+  double associationDistanceM = 0.6;  // a door seen from its two sides differs by the wall's thickness
+  std::size_t minSupport = 3;          // scans
+  std::size_t forgetAfterUpdates = 50;
+};
+
+// Throws ConfigError for a non-positive distance or a zero count.
+void validate(const PassageTrackerConfig& config);
+
+struct TrackedGateway {
+  GatewayId id = 0;  // from 1, increasing
+  Eigen::Vector2d left = Eigen::Vector2d::Zero();   // mean gateway points, in the order of the
+  Eigen::Vector2d right = Eigen::Vector2d::Zero();  // first hypothesis (seen from its side)
+  double meanConfidence = 0.0;
+  std::size_t support = 0;  // scans
+  std::size_t observations = 0;
+  DataId firstScan = 0;
+  DataId lastScan = 0;
+  bool confirmed = false;
+  std::size_t traversals = 0;
+
+  double widthM() const { return (left - right).norm(); }
+  Eigen::Vector2d midpoint() const { return 0.5 * (left + right); }
+};
+
+struct GatewayTraversal {
+  GatewayId gateway = 0;
+  DataId scanId = 0;                              // the update at which it was crossed
+  Eigen::Vector2d crossing = Eigen::Vector2d::Zero();  // where the path crossed the gateway line
+  bool fromObservedSide = false;  // from the side the gateway was first seen from to the other
+};
+
+struct TrackerUpdate {
+  std::vector<GatewayId> confirmed;  // gateways confirmed by this update
+  std::vector<GatewayTraversal> traversals;
+};
+
+class PassageTracker {
+ public:
+  // Throws ConfigError for a bad configuration.
+  explicit PassageTracker(const PassageTrackerConfig& config = {});
+
+  // The hypotheses of scan `scanId`, taken with the robot at `robotPose` (world frame, the
+  // frame of the hypotheses). Updates must come in scan order.
+  TrackerUpdate update(DataId scanId, const Pose2D& robotPose, const std::vector<PassageHypothesis>& hypotheses);
+
+  // Every live track, confirmed or not, in the order they were started.
+  const std::vector<TrackedGateway>& tracks() const { return tracks_; }
+  std::vector<TrackedGateway> gateways() const;  // the confirmed ones
+
+ private:
+  struct Sums {
+    Eigen::Vector2d left = Eigen::Vector2d::Zero(), right = Eigen::Vector2d::Zero();
+    double confidence = 0.0;
+    std::size_t lastUpdate = 0;
+  };
+
+  void traverse(DataId scanId, const Pose2D& robotPose, TrackerUpdate& out);
+  void associate(const PassageHypothesis& hypothesis, TrackerUpdate& out);
+
+  PassageTrackerConfig config_;
+  std::vector<TrackedGateway> tracks_;
+  std::vector<Sums> sums_;  // parallel to tracks_
+  std::size_t updates_ = 0;
+  GatewayId nextId_ = 1;
+  bool hasPose_ = false;
+  Pose2D lastPose_;
+};
+
+}  // namespace rgnav
