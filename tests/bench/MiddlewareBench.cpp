@@ -24,6 +24,7 @@
 #include "tests/support/cluster/TestCluster.h"
 #include "watchdog/Spawn.h"
 #include "tools/common/CommandLine.h"
+#include "tests/support/Statistics.h"
 
 namespace po = boost::program_options;
 using namespace rgnav;
@@ -31,16 +32,6 @@ using namespace rgnav::testing;
 using Clock = std::chrono::steady_clock;
 
 namespace {
-
-double median(std::vector<double> v) {
-  std::sort(v.begin(), v.end());
-  return v.empty() ? 0.0 : v[v.size() / 2];
-}
-
-double percentile(std::vector<double> v, double p) {
-  std::sort(v.begin(), v.end());
-  return v.empty() ? 0.0 : v[std::min(v.size() - 1, static_cast<std::size_t>(p * double(v.size() - 1) + 0.5))];
-}
 
 // Seconds one call of f takes.
 template <class F>

@@ -27,6 +27,7 @@
 #include "tests/support/cluster/TestCluster.h"
 #include "watchdog/Spawn.h"
 #include "tools/common/CommandLine.h"
+#include "tests/support/Statistics.h"
 
 namespace po = boost::program_options;
 using namespace rgnav;
@@ -73,12 +74,6 @@ std::vector<DataId> recordedIds(const std::string& file) {
   std::string rest;
   while (in >> kind >> id && std::getline(in, rest)) ids.push_back(id);
   return ids;
-}
-
-double percentile(std::vector<double> values, double p) {
-  if (values.empty()) return 0;
-  std::sort(values.begin(), values.end());
-  return values[std::min(values.size() - 1, static_cast<std::size_t>(p * (values.size() - 1) + 0.5))];
 }
 
 bool running(const ModuleProcessInfo& m) { return m.state == ProcessState::Running; }

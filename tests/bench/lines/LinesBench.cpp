@@ -22,17 +22,14 @@
 #include "core/objects/QuadrangleGrouping.h"
 #include "core/objects/testing/SyntheticLines.h"
 #include "tools/common/CommandLine.h"
+#include "tests/support/Statistics.h"
 
 namespace po = boost::program_options;
 using namespace rgnav;
+using rgnav::testing::median;
 using Clock = std::chrono::steady_clock;
 
 namespace {
-
-double median(std::vector<double> v) {
-  std::sort(v.begin(), v.end());
-  return v.empty() ? 0.0 : v[v.size() / 2];
-}
 
 template <class F>
 double seconds(F&& f) {
