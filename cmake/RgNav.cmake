@@ -32,9 +32,15 @@ function(rgnav_add_test name)
   if(NOT ARG_TIMEOUT)
     set(ARG_TIMEOUT 300)
   endif()
-  set_tests_properties(${name} PROPERTIES TIMEOUT ${ARG_TIMEOUT}
-    ENVIRONMENT "RGNAV_SHARED=${RGNAV_SHARED_DIR};RGNAV_BIN=${CMAKE_BINARY_DIR}/bin;RGNAV_ROOT=${CMAKE_SOURCE_DIR}")
+  rgnav_test_environment(${name} ${ARG_TIMEOUT})
   if(ARG_LABELS)
     set_tests_properties(${name} PROPERTIES LABELS "${ARG_LABELS}")
   endif()
+endfunction()
+
+# rgnav_test_environment(<test> <timeout_s>): where a test finds the shared data, the built
+# programs and the project root, and how long it may run.
+function(rgnav_test_environment test timeout)
+  set_tests_properties(${test} PROPERTIES TIMEOUT ${timeout}
+    ENVIRONMENT "RGNAV_SHARED=${RGNAV_SHARED_DIR};RGNAV_BIN=${CMAKE_BINARY_DIR}/bin;RGNAV_ROOT=${CMAKE_SOURCE_DIR}")
 endfunction()
