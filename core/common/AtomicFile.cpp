@@ -6,6 +6,9 @@
 
 #include <cerrno>
 #include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
 
 #include "core/common/Errors.h"
 
@@ -37,6 +40,16 @@ void writeFileAtomically(const std::string& path, const std::string& content) {
     ::unlink(temp.c_str());
     throw FileError(path + ": cannot replace: " + std::strerror(err));
   }
+}
+
+std::optional<std::string> readCheckpoint(const std::string& path) {
+  if (path.empty() || !std::filesystem::exists(path)) return std::nullopt;
+  std::ifstream in(path, std::ios::binary);
+  if (!in.is_open()) throw FileError(path + ": cannot open: " + std::strerror(errno));
+  std::ostringstream bytes;
+  bytes << in.rdbuf();
+  if (in.bad()) throw FileError(path + ": cannot read");
+  return bytes.str();
 }
 
 }  // namespace rgnav
