@@ -1,5 +1,7 @@
 // Tests Baum-Welch with fixed Gaussians: the training log-likelihood never decreases, the
-// Gaussians stay as they were, and a known left-right structure is recovered from a uniform start.
+// Gaussians stay as they were, and a known left-right structure is recovered from a uniform start;
+// with learned Gaussians, displaced means move back to the truth and every covariance keeps the
+// floor.
 #include "core/gateways/classify/BaumWelch.h"
 
 #include <cppunit/extensions/HelperMacros.h>
@@ -49,13 +51,14 @@ class BaumWelchTest : public CppUnit::TestFixture {
   CPPUNIT_TEST_SUITE(BaumWelchTest);
   CPPUNIT_TEST(likelihoodIncreasesMonotonically);
   CPPUNIT_TEST(keepsGaussiansAndRecoversLeftRightStructure);
+  CPPUNIT_TEST(learnedGaussiansMoveToTheData);
   CPPUNIT_TEST(rejectsBadInput);
   CPPUNIT_TEST_SUITE_END();
 
  public:
   void likelihoodIncreasesMonotonically() {
     const rgnav::BaumWelchResult result =
-        rgnav::trainBaumWelch(uniformStart(truth()), training(truth(), 40), {60, 0.0});
+        rgnav::trainBaumWelch(uniformStart(truth()), training(truth(), 40), {60, 0.0, std::nullopt});
     CPPUNIT_ASSERT_EQUAL(std::size_t(61), result.logLikelihoods.size());
     for (std::size_t i = 1; i < result.logLikelihoods.size(); ++i) {
       const double previous = result.logLikelihoods[i - 1];
@@ -66,7 +69,7 @@ class BaumWelchTest : public CppUnit::TestFixture {
 
   void keepsGaussiansAndRecoversLeftRightStructure() {
     const GaussianMixtureHmm start = uniformStart(truth());
-    const rgnav::BaumWelchResult result = rgnav::trainBaumWelch(start, training(truth(), 80), {500, 1e-9});
+    const rgnav::BaumWelchResult result = rgnav::trainBaumWelch(start, training(truth(), 80), {500, 1e-9, std::nullopt});
     CPPUNIT_ASSERT(result.converged);
     rgnav::validateHmm(result.hmm);
     const GaussianMixtureHmm& hmm = result.hmm;
@@ -86,12 +89,33 @@ class BaumWelchTest : public CppUnit::TestFixture {
     CPPUNIT_ASSERT(backwards.maxCoeff() < 0.05);
   }
 
+  void learnedGaussiansMoveToTheData() {
+    GaussianMixtureHmm start = uniformStart(truth());
+    for (rgnav::HmmState& state : start.states) {
+      const rgnav::MultivariateGaussian& g = state.components.front();
+      state.components.front() = rgnav::MultivariateGaussian(g.mean() + Eigen::Vector2d(0.3, -0.2), g.covariance());
+    }
+    const std::vector<Eigen::MatrixXd> data = training(truth(), 80);
+    const rgnav::BaumWelchResult fixed = rgnav::trainBaumWelch(start, data, {200, 1e-9, std::nullopt});
+    const rgnav::BaumWelchResult learned = rgnav::trainBaumWelch(start, data, {200, 1e-9, 0.01});
+    rgnav::validateHmm(learned.hmm);
+    CPPUNIT_ASSERT(learned.logLikelihoods.back() > fixed.logLikelihoods.back() + 10.0);
+    const GaussianMixtureHmm reference = truth();
+    for (std::size_t j = 0; j < reference.states.size(); ++j) {
+      const rgnav::MultivariateGaussian& g = learned.hmm.states[j].components.front();
+      CPPUNIT_ASSERT((g.mean() - reference.states[j].components.front().mean()).norm() < 0.1);
+      CPPUNIT_ASSERT(g.covariance().diagonal().minCoeff() > 0.01);
+    }
+  }
+
   void rejectsBadInput() {
     CPPUNIT_ASSERT_THROW(rgnav::trainBaumWelch(truth(), {}), rgnav::InvalidArgumentError);
     CPPUNIT_ASSERT_THROW(rgnav::trainBaumWelch(truth(), {Eigen::MatrixXd::Zero(3, 4)}), rgnav::InvalidArgumentError);
     GaussianMixtureHmm broken = truth();
     broken.transitions(0, 0) = 0.9;
     CPPUNIT_ASSERT_THROW(rgnav::trainBaumWelch(broken, training(truth(), 2)), rgnav::InvalidArgumentError);
+    CPPUNIT_ASSERT_THROW(rgnav::trainBaumWelch(truth(), training(truth(), 2), {10, 1e-6, 0.0}),
+                         rgnav::InvalidArgumentError);
   }
 };
 CPPUNIT_TEST_SUITE_REGISTRATION(BaumWelchTest);

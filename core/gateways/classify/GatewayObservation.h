@@ -1,8 +1,10 @@
 // GatewayObservation and GatewayObservationSequence: the input of every gateway classifier of
 // thesis 4.1.3, independent of how the observation vectors are computed (4.1.2.3). An observation
-// is one vector of gateway weights W(GW, VLM), one entry per gateway class measure, together with
-// the distance from the robot to the gateway; a sequence holds the observations of one tracked
-// VLM hypothesis in the order they were made, i.e. by decreasing distance.
+// is one observation vector - the gateway weights W(GW, VLM), one entry per gateway class
+// measure, possibly followed by further entries (the VLM's measures, core/gateways/vlm
+// ObservationVector.h) - together with the distance from the robot to the gateway; a sequence
+// holds the observations of one tracked VLM hypothesis in the order they were made, i.e. by
+// decreasing distance.
 #pragma once
 
 #include <Eigen/Core>
@@ -12,7 +14,7 @@ namespace rgnav {
 
 struct GatewayObservation {
   double distance = 0.0;    // metres from the robot to the gateway (0 = gateway centre)
-  Eigen::VectorXd weights;  // one weight per gateway class measure
+  Eigen::VectorXd weights;  // the observation vector: one weight per gateway class measure first
 };
 
 // Observations of one VLM hypothesis, the farthest first and the closest last. The order is

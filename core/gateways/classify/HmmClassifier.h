@@ -3,8 +3,8 @@
 // prior each. A sequence goes to the class of the largest posterior, i.e. of the largest
 // log P(O | lambda_c) + log P(c); with equal priors that is the maximum likelihood decision.
 // Several sequences of the same gateway are fused with Bayes' rule (4.1.4, BayesFusion.h).
-// Only the weight vectors enter the HMMs; the distances shape the models in training alone
-// (HmmTrainer.h).
+// Only the observation vectors (all their entries) enter the HMMs; the distances shape the
+// models in training alone (HmmTrainer.h).
 #pragma once
 
 #include <Eigen/Core>

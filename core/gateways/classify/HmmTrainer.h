@@ -9,7 +9,9 @@
 // Differences: the thesis adds random noise to the clustering data; here the noise's expected
 // effect, noiseStdDev^2 on the covariance diagonal, is added, which is deterministic and keeps
 // every covariance positive definite. Covariances are full (maximum likelihood, 1/n). Clusters
-// that end up empty are dropped.
+// that end up empty are dropped. With em.learnedCovarianceFloor set, step (5) learns the
+// Gaussians too (BaumWelch.h); rgnav-eval-crossings sets that floor to noiseStdDev^2 and decides
+// on validation data whether the Gaussians are learned.
 #pragma once
 
 #include <Eigen/Core>

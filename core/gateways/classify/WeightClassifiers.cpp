@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <string>
 
 #include "core/common/Errors.h"
 
@@ -17,7 +18,7 @@ bool isIgnored(const GatewayWeightLayout& layout, GatewayClass c) {
 // The class of the largest weight among the entries the layout does not ignore.
 GatewayClass argmaxClass(const Eigen::VectorXd& weights, const GatewayWeightLayout& layout) {
   Eigen::Index best = -1;
-  for (Eigen::Index i = 0; i < weights.size(); ++i) {
+  for (Eigen::Index i = 0; i < static_cast<Eigen::Index>(layout.entries.size()); ++i) {
     if (isIgnored(layout, layout.entries[static_cast<std::size_t>(i)])) continue;
     if (best < 0 || weights[i] > weights[best]) best = i;
   }
@@ -30,6 +31,15 @@ Eigen::Index dimensionOf(const GatewayWeightLayout& layout) {
   return static_cast<Eigen::Index>(layout.entries.size());
 }
 
+// The layout's weights lead every observation vector; further entries are allowed.
+void checkObservations(const GatewayObservationSequence& sequence, Eigen::Index weights) {
+  checkSequence(sequence, sequence.empty() ? weights : sequence.front().weights.size());
+  if (sequence.front().weights.size() < weights) {
+    throw InvalidArgumentError("observation vectors hold " + std::to_string(sequence.front().weights.size()) +
+                               " entries, the weight layout " + std::to_string(weights));
+  }
+}
+
 }  // namespace
 
 GatewayWeightLayout thesisWeightLayout() {
@@ -38,7 +48,7 @@ GatewayWeightLayout thesisWeightLayout() {
 
 GatewayClass classifySingleObservation(const GatewayObservationSequence& sequence, const GatewayWeightLayout& layout,
                                        std::size_t fromEnd) {
-  checkSequence(sequence, dimensionOf(layout));
+  checkObservations(sequence, dimensionOf(layout));
   const std::size_t index = sequence.size() - 1 - std::min(fromEnd, sequence.size() - 1);
   return argmaxClass(sequence[index].weights, layout);
 }
@@ -49,12 +59,12 @@ GatewayClass classifyAveragedSequence(const GatewayObservationSequence& sequence
     throw InvalidArgumentError("ASC needs a positive minimum distance and a finite exponent");
   }
   const Eigen::Index dimension = dimensionOf(layout);
-  checkSequence(sequence, dimension);
+  checkObservations(sequence, dimension);
   Eigen::VectorXd sum = Eigen::VectorXd::Zero(dimension);
   double totalWeight = 0.0;
   for (const GatewayObservation& o : sequence) {
     const double w = std::pow(std::max(o.distance, config.minDistance), -config.exponent);
-    sum += w * o.weights;
+    sum += w * o.weights.head(dimension);
     totalWeight += w;
   }
   return argmaxClass(sum / totalWeight, layout);

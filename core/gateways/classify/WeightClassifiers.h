@@ -15,6 +15,8 @@
 
 namespace rgnav {
 
+// The first entries.size() entries of an observation vector are its weights; entries after them
+// (the measures of core/gateways/vlm ObservationVector.h) are not read.
 struct GatewayWeightLayout {
   std::vector<GatewayClass> entries;  // the class measured by each weight entry, in order
   std::vector<GatewayClass> ignored;  // classes never chosen

@@ -1,5 +1,6 @@
 // Tests SOC, "last but one" and ASC (thesis 4.1.3.1-4.1.3.2) on a constructed T-Junction
-// approach whose last view cuts the corner and looks like an L-Turn (thesis figure 4.5).
+// approach whose last view cuts the corner and looks like an L-Turn (thesis figure 4.5); entries
+// after the weights (the measures of the observation vector) are not read.
 #include "core/gateways/classify/WeightClassifiers.h"
 
 #include <cppunit/extensions/HelperMacros.h>
@@ -33,6 +34,7 @@ class WeightClassifiersTest : public CppUnit::TestFixture {
   CPPUNIT_TEST(socUsesTheLastObservationAndIgnoresHallway);
   CPPUNIT_TEST(lastButOneUsesTheObservationBefore);
   CPPUNIT_TEST(ascWeighsByInverseDistance);
+  CPPUNIT_TEST(ignoresEntriesAfterTheWeights);
   CPPUNIT_TEST(rejectsBadInput);
   CPPUNIT_TEST_SUITE_END();
 
@@ -63,6 +65,18 @@ class WeightClassifiersTest : public CppUnit::TestFixture {
     GatewayObservationSequence atCentre = cutCornerApproach();
     atCentre.back().distance = 0.0;
     CPPUNIT_ASSERT(GatewayClass::LTurn == rgnav::classifyAveragedSequence(atCentre, layout, {1.0, 0.01}));
+  }
+
+  void ignoresEntriesAfterTheWeights() {
+    const rgnav::GatewayWeightLayout layout = rgnav::thesisWeightLayout();
+    GatewayObservationSequence extended = cutCornerApproach();
+    for (GatewayObservation& o : extended) {
+      o.weights.conservativeResize(16);
+      o.weights.tail(8).setConstant(5.0);
+    }
+    CPPUNIT_ASSERT(GatewayClass::LTurn == rgnav::classifySingleObservation(extended, layout));
+    CPPUNIT_ASSERT(GatewayClass::TJunction == rgnav::classifySingleObservation(extended, layout, 1));
+    CPPUNIT_ASSERT(GatewayClass::TJunction == rgnav::classifyAveragedSequence(extended, layout));
   }
 
   void rejectsBadInput() {

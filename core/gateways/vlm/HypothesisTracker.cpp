@@ -14,10 +14,15 @@ HypothesisTracker::HypothesisTracker(const TrackerParams& params) : params_(para
     throw InvalidArgumentError("hypothesis tracker: need positive start distance and tolerance, entry depth >= 0");
 }
 
+HypothesisTracker::HypothesisTracker(const TrackerParams& params, HypothesisTrackerState state)
+    : HypothesisTracker(params) {
+  state_ = std::move(state);
+}
+
 void HypothesisTracker::finish(std::size_t index, SequenceEnd end) {
-  running_[index].sequence.end = end;
-  finished_.push_back(std::move(running_[index].sequence));
-  running_.erase(running_.begin() + static_cast<std::ptrdiff_t>(index));
+  state_.running[index].sequence.end = end;
+  state_.finished.push_back(std::move(state_.running[index].sequence));
+  state_.running.erase(state_.running.begin() + static_cast<std::ptrdiff_t>(index));
 }
 
 void HypothesisTracker::update(const Pose2D& sensorPose, const std::vector<VlmObservation>& observations) {
@@ -28,19 +33,19 @@ void HypothesisTracker::update(const Pose2D& sensorPose, const std::vector<VlmOb
 
   // Candidate matches (distance, track, hypothesis), closest first.
   std::vector<std::tuple<double, std::size_t, std::size_t>> candidates;
-  for (std::size_t t = 0; t < running_.size(); ++t)
+  for (std::size_t t = 0; t < state_.running.size(); ++t)
     for (std::size_t h = 0; h < world.size(); ++h)
-      if (const double d = largestPointDistance(running_[t].sequence.gatewayPoints, world[h]);
+      if (const double d = largestPointDistance(state_.running[t].sequence.gatewayPoints, world[h]);
           d <= params_.matchToleranceM)
         candidates.emplace_back(d, t, h);
   std::sort(candidates.begin(), candidates.end());
 
-  std::vector<bool> trackMatched(running_.size(), false), hypothesisUsed(world.size(), false);
-  std::vector<bool> entered(running_.size(), false);
+  std::vector<bool> trackMatched(state_.running.size(), false), hypothesisUsed(world.size(), false);
+  std::vector<bool> entered(state_.running.size(), false);
   for (const auto& [d, t, h] : candidates) {
     if (trackMatched[t] || hypothesisUsed[h]) continue;
     trackMatched[t] = hypothesisUsed[h] = true;
-    Track& track = running_[t];
+    RunningSequence& track = state_.running[t];
     track.missed = 0;
     track.sequence.gatewayPoints = world[h];
     if (depthPastEntrance(world[h], robot) > params_.entryDepthM) {
@@ -48,13 +53,13 @@ void HypothesisTracker::update(const Pose2D& sensorPose, const std::vector<VlmOb
       continue;
     }
     track.sequence.distances.push_back(observations[h].distanceM);
-    track.sequence.observations.push_back(observations[h].weights);
+    track.sequence.observations.push_back(observations[h].observation);
   }
   // Finish from the back so that indices stay valid.
-  for (std::size_t t = running_.size(); t-- > 0;) {
+  for (std::size_t t = state_.running.size(); t-- > 0;) {
     if (entered[t]) {
       finish(t, SequenceEnd::Entered);
-    } else if (!trackMatched[t] && ++running_[t].missed > params_.maxMissedScans) {
+    } else if (!trackMatched[t] && ++state_.running[t].missed > params_.maxMissedScans) {
       finish(t, SequenceEnd::Lost);
     }
   }
@@ -62,23 +67,23 @@ void HypothesisTracker::update(const Pose2D& sensorPose, const std::vector<VlmOb
     if (hypothesisUsed[h] || observations[h].distanceM > params_.startDistanceM ||
         depthPastEntrance(world[h], robot) > params_.entryDepthM)
       continue;
-    Track track;
-    track.sequence.id = nextId_++;
+    RunningSequence track;
+    track.sequence.id = state_.nextId++;
     track.sequence.gatewayPoints = world[h];
     track.sequence.distances.push_back(observations[h].distanceM);
-    track.sequence.observations.push_back(observations[h].weights);
-    running_.push_back(std::move(track));
+    track.sequence.observations.push_back(observations[h].observation);
+    state_.running.push_back(std::move(track));
   }
 }
 
 void HypothesisTracker::flush() {
-  for (Track& track : running_) {
+  for (RunningSequence& track : state_.running) {
     track.sequence.end = SequenceEnd::Flushed;
-    finished_.push_back(std::move(track.sequence));
+    state_.finished.push_back(std::move(track.sequence));
   }
-  running_.clear();
+  state_.running.clear();
 }
 
-std::vector<TrackedSequence> HypothesisTracker::takeFinished() { return std::exchange(finished_, {}); }
+std::vector<TrackedSequence> HypothesisTracker::takeFinished() { return std::exchange(state_.finished, {}); }
 
 }  // namespace rgnav

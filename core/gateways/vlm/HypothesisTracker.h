@@ -37,14 +37,28 @@ struct TrackedSequence {
   std::uint64_t id = 0;
   GatewayPoints gatewayPoints;                     // world frame, from the last matched hypothesis
   std::vector<double> distances;                   // m, robot to gateway centre, per observation
-  std::vector<std::vector<double>> observations;   // W(GW, VLM) per class, per observation
+  std::vector<std::vector<double>> observations;   // observation vectors (ObservationVector.h)
   SequenceEnd end = SequenceEnd::Flushed;
+};
+
+// Everything a tracker knows, so that a module can checkpoint it and resume exactly.
+struct RunningSequence {
+  TrackedSequence sequence;
+  std::size_t missed = 0;  // consecutive scans without a match
+};
+
+struct HypothesisTrackerState {
+  std::uint64_t nextId = 1;
+  std::vector<RunningSequence> running;
+  std::vector<TrackedSequence> finished;  // not taken yet
 };
 
 class HypothesisTracker {
  public:
   // Throws InvalidArgumentError for non-positive distances or tolerance.
   explicit HypothesisTracker(const TrackerParams& params = {});
+  // Resumes from a saved state; throws as above.
+  HypothesisTracker(const TrackerParams& params, HypothesisTrackerState state);
 
   // The hypotheses of one scan whose sensor frame is `sensorPose` in the world.
   void update(const Pose2D& sensorPose, const std::vector<VlmObservation>& observations);
@@ -52,20 +66,14 @@ class HypothesisTracker {
   void flush();
   // The sequences finished since the last call, in the order they finished.
   std::vector<TrackedSequence> takeFinished();
-  std::size_t runningCount() const { return running_.size(); }
+  std::size_t runningCount() const { return state_.running.size(); }
+  const HypothesisTrackerState& state() const { return state_; }
 
  private:
-  struct Track {
-    TrackedSequence sequence;
-    std::size_t missed = 0;
-  };
-
   void finish(std::size_t index, SequenceEnd end);
 
   TrackerParams params_;
-  std::uint64_t nextId_ = 1;
-  std::vector<Track> running_;
-  std::vector<TrackedSequence> finished_;
+  HypothesisTrackerState state_;
 };
 
 }  // namespace rgnav

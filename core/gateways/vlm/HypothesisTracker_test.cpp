@@ -10,6 +10,7 @@
 
 #include "core/common/Errors.h"
 #include "core/gateways/vlm/HypothesisTracker.h"
+#include "core/gateways/vlm/ObservationVector.h"
 #include "core/gateways/vlm/testing/JunctionScan.h"
 
 using rgnav::GatewayClass;
@@ -67,7 +68,7 @@ class HypothesisTrackerTest : public CppUnit::TestFixture {
     CPPUNIT_ASSERT(s.distances.front() <= 7.0);
     CPPUNIT_ASSERT_DOUBLES_EQUAL(1.0, s.distances.back(), 0.1);  // last seen at the entrance
     for (std::size_t i = 1; i < s.distances.size(); ++i) CPPUNIT_ASSERT(s.distances[i] < s.distances[i - 1]);
-    for (const auto& o : s.observations) CPPUNIT_ASSERT_EQUAL(rgnav::kGatewayClasses.size(), o.size());
+    for (const auto& o : s.observations) CPPUNIT_ASSERT_EQUAL(rgnav::kObservationSize, o.size());
     for (const TrackedSequence& any : all) CPPUNIT_ASSERT(any.distances.front() <= 7.0);
   }
 

@@ -28,6 +28,7 @@ std::vector<VlmObservation> VlmObserver::observe(const LaserScan& scan) const {
     o.rectangularityMeasure = rectangularityMeasure(h.gatewayPoints);
     o.freespace = freespaceMeasures(h, scan, params_.freespace);
     o.weights = gatewayWeights(o.distanceMeasure, o.rectangularityMeasure, o.freespace, params_.weights);
+    o.observation = observationVector(o.weights, o.distanceMeasure, o.rectangularityMeasure, o.freespace);
     observations.push_back(std::move(o));
   }
   return observations;

@@ -1,7 +1,8 @@
 // VlmObserver: one laser scan to observation vectors, thesis 4.1.1-4.1.2: the line scan
 // (core/lines LineExtractor), virtual lines, depth singularities, VLM hypotheses, and per
-// hypothesis the general measures W_d and W_r, the freespace measures per sector and the
-// weights W(GW, VLM) per gateway class. Everything in the sensor frame of the scan.
+// hypothesis the general measures W_d and W_r, the freespace measures per sector, the
+// weights W(GW, VLM) per gateway class and the observation vector (ObservationVector.h).
+// Everything in the sensor frame of the scan.
 #pragma once
 
 #include <vector>
@@ -9,6 +10,7 @@
 #include "core/common/SensorData.h"
 #include "core/gateways/vlm/FreespaceMeasures.h"
 #include "core/gateways/vlm/GatewayWeights.h"
+#include "core/gateways/vlm/ObservationVector.h"
 #include "core/gateways/vlm/VirtualLines.h"
 #include "core/gateways/vlm/VlmHypotheses.h"
 #include "core/lines/LineExtractor.h"
@@ -31,6 +33,7 @@ struct VlmObservation {
   double rectangularityMeasure = 0.0;  // W_r
   SectorFreespace freespace;
   std::vector<double> weights;  // W(GW, VLM) per class of kGatewayClasses
+  std::vector<double> observation;  // weights, then measures (ObservationVector.h)
 };
 
 class VlmObserver {

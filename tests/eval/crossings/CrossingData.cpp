@@ -2,19 +2,10 @@
 #include "tests/eval/crossings/CrossingData.h"
 
 #include "core/common/Errors.h"
+#include "core/gateways/vlm/TrackedObservations.h"
 #include "tests/eval/crossings/ParallelFor.h"
 
 namespace rgnav {
-
-GatewayObservationSequence toObservationSequence(const TrackedSequence& tracked) {
-  GatewayObservationSequence sequence;
-  sequence.reserve(tracked.observations.size());
-  for (std::size_t i = 0; i < tracked.observations.size(); ++i) {
-    const std::vector<double>& w = tracked.observations[i];
-    sequence.push_back({tracked.distances[i], Eigen::Map<const Eigen::VectorXd>(w.data(), Eigen::Index(w.size()))});
-  }
-  return sequence;
-}
 
 ClassSequences merged(ClassSequences a, const ClassSequences& b) {
   for (const auto& [c, sequences] : b) a[c].insert(a[c].end(), sequences.begin(), sequences.end());
@@ -37,11 +28,14 @@ CrossingData generateCrossingData(std::uint64_t seed, int layoutsPerClass, const
     EnvironmentData& target = data.environments[env];
     ClassSequences& split = layout % 2 == 1 ? target.test : layout % 4 == 0 ? target.fit : target.validation;
     if (layout % 2 == 1) target.testApproaches[specs[i].gatewayClass] += perScenario[i].approaches;
+    std::vector<GatewayObservationSequence> gateway;
     for (const LabelledTrack& t : perScenario[i].tracks) {
       split[t.truth].push_back(toObservationSequence(t.sequence));
+      if (t.truth != GatewayClass::Hallway) gateway.push_back(split[t.truth].back());
       ++data.sequences;
       data.observations += t.sequence.observations.size();
     }
+    if (layout % 2 == 1 && !gateway.empty()) target.testGateways[specs[i].gatewayClass].push_back(std::move(gateway));
   }
   return data;
 }

@@ -1,9 +1,12 @@
 // CrossingData: the labelled observation sequences of all scenarios of a seeded scenario set
 // (core/sim HallwayScenarios), computed on several threads, converted to the classifiers'
-// GatewayObservationSequence and split per environment by clutter layout, so that no test
-// sequence was recorded in a world the HMMs were trained in: of the layouts of one environment
-// and class, odd ones are test data, even ones training data, and of those every other one
-// (layout % 4 == 2) is held out to choose the HMM configuration (validation).
+// GatewayObservationSequence (core/gateways/vlm TrackedObservations.h) and split per
+// environment by clutter layout, so that no test sequence was recorded in a world the HMMs were
+// trained in: of the layouts of one environment and class, odd ones are test data, even ones
+// training data, and of those every other one (layout % 4 == 2) is held out to choose the HMM
+// configuration (validation). For the Bayes fusion of several sequences of one gateway
+// (Evaluation.h) the test sequences are also kept per gateway: per test layout of a gateway
+// class, its sequences of that class from all approaches.
 #pragma once
 
 #include <array>
@@ -18,12 +21,15 @@
 namespace rgnav {
 
 using ClassSequences = std::map<GatewayClass, std::vector<GatewayObservationSequence>>;
+// Per class, one entry per gateway: the sequences recorded of it.
+using GatewaySequences = std::map<GatewayClass, std::vector<std::vector<GatewayObservationSequence>>>;
 
 struct EnvironmentData {
   ClassSequences fit;         // layout % 4 == 0
   ClassSequences validation;  // layout % 4 == 2
   ClassSequences test;        // odd layouts
   std::map<GatewayClass, std::size_t> testApproaches;  // approaches driven in the test layouts
+  GatewaySequences testGateways;  // the gateway-class sequences of `test`, per layout (Hallway: none)
 };
 
 struct CrossingData {
@@ -31,8 +37,6 @@ struct CrossingData {
   std::size_t sequences = 0;
   std::size_t observations = 0;
 };
-
-GatewayObservationSequence toObservationSequence(const TrackedSequence& tracked);
 
 // `a` with the sequences of `b` appended.
 ClassSequences merged(ClassSequences a, const ClassSequences& b);

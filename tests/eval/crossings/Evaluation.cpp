@@ -38,6 +38,26 @@ HmmClassifier pairwiseClassifier(const HmmClassifier& all, GatewayClass a, Gatew
   return HmmClassifier(std::move(pair));
 }
 
+void addFusedClassifications(const HmmClassifier& classifier, const GatewaySequences& gateways,
+                             GatewayConfusionMatrix& matrix) {
+  const std::vector<GatewayClass>& classes = matrix.classes();
+  for (const auto& [truth, perGateway] : gateways) {
+    if (std::find(classes.begin(), classes.end(), truth) == classes.end()) continue;
+    for (const std::vector<GatewayObservationSequence>& sequences : perGateway)
+      matrix.add(truth, classifier.classify(sequences).best());
+  }
+}
+
+// The lowest rate of a gateway class (counter-class excluded) in `m`; NaN if it has none.
+double minGatewayClassRate(const GatewayConfusionMatrix& m) {
+  double lowest = std::numeric_limits<double>::quiet_NaN();
+  const std::vector<GatewayClass>& modelled = m.classes();
+  for (const GatewayClass c : gatewayClassesOnly())
+    if (std::find(modelled.begin(), modelled.end(), c) != modelled.end() && m.total(c) > 0)
+      lowest = std::fmin(lowest, m.classAccuracy(c));
+  return lowest;
+}
+
 }  // namespace
 
 void addHmmClassifications(const HmmClassifier& classifier, const ClassSequences& test,
@@ -60,12 +80,13 @@ CrossingResults evaluateCrossings(const CrossingData& data, const HmmClassifier&
   std::vector<HmmClassifier> pairwise;
   for (const auto& [a, b] : kTable43Pairs) pairwise.push_back(pairwiseClassifier(hmm, a, b));
   const double none = std::numeric_limits<double>::quiet_NaN();
-  CrossingResults results{{}, GatewayConfusionMatrix(hmm.classes()), GatewayConfusionMatrix(hmm.classes()), none, none};
+  CrossingResults results{
+      {}, GatewayConfusionMatrix(hmm.classes()), GatewayConfusionMatrix(hmm.classes()), none, none, none};
   const auto& environments = thesisEnvironments();
   for (std::size_t e = 0; e < environments.size(); ++e) {
     const ClassSequences& test = data.environments[e].test;
     EnvironmentResults& r = results.environments.emplace_back(EnvironmentResults{
-        .hmm = GatewayConfusionMatrix(hmm.classes()), .pairs = {}});
+        .hmm = GatewayConfusionMatrix(hmm.classes()), .pairs = {}, .fused = GatewayConfusionMatrix(hmm.classes())});
     addWeightClassifications(test, r);
     addHmmClassifications(hmm, test, r.hmm);
     addHmmClassifications(hmm, test, results.hmmAll);
@@ -73,12 +94,12 @@ CrossingResults evaluateCrossings(const CrossingData& data, const HmmClassifier&
       r.pairs.emplace_back(std::vector<GatewayClass>{kTable43Pairs[p].first, kTable43Pairs[p].second});
       addHmmClassifications(pairwise[p], test, r.pairs.back());
     }
+    addFusedClassifications(hmm, data.environments[e].testGateways, r.fused);
     if (!is2mCluttered(environments[e])) continue;
     addHmmClassifications(hmm, test, results.hmm2mCluttered);
-    const std::vector<GatewayClass>& modelled = r.hmm.classes();
-    for (const GatewayClass c : gatewayClassesOnly())
-      if (std::find(modelled.begin(), modelled.end(), c) != modelled.end() && r.hmm.total(c) > 0)
-        results.hmmMinClassRate2mCluttered = std::fmin(results.hmmMinClassRate2mCluttered, r.hmm.classAccuracy(c));
+    results.hmmMinClassRate2mCluttered = std::fmin(results.hmmMinClassRate2mCluttered, minGatewayClassRate(r.hmm));
+    results.fusedMinClassRate2mCluttered =
+        std::fmin(results.fusedMinClassRate2mCluttered, minGatewayClassRate(r.fused));
   }
   if (results.hmmAll.total() > 0) results.hmmMeanClassRate = results.hmmAll.meanClassAccuracy();
   return results;

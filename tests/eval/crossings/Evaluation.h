@@ -4,6 +4,12 @@
 // scored on the seven gateway classes; the multi-class HMM classifier has one model per class
 // with training data (counter-class included) and is scored on every class; a pairwise
 // classifier (table 4.3) holds the HMMs of two classes only and sees test data of those two.
+// Separately, the Bayes fusion of thesis 4.1.4 (last paragraph: "it is possible to globally fuse
+// the results of different observation sequences formally, using Bayes filter"): every test
+// gateway (one layout of a gateway class) is classified once from the sequences of all its
+// approaches together (HmmClassifier::classify of several sequences), as a robot that passes a
+// gateway several times would; its rates count gateways, not sequences, and are reported beside
+// the per-sequence rates, never instead of them.
 #pragma once
 
 #include <array>
@@ -37,6 +43,7 @@ struct EnvironmentResults {
   GatewayConfusionMatrix socLastButOne{gatewayClassesOnly()};
   GatewayConfusionMatrix hmm;
   std::vector<GatewayConfusionMatrix> pairs;  // one per kTable43Pairs entry
+  GatewayConfusionMatrix fused;               // one decision per test gateway (Bayes fusion)
 };
 
 struct CrossingResults {
@@ -48,6 +55,8 @@ struct CrossingResults {
   // included); NaN without test sequences.
   double hmmMinClassRate2mCluttered = 0.0;
   double hmmMeanClassRate = 0.0;
+  // The same minimum for the fused decisions (gateways recognised / gateways); NaN without any.
+  double fusedMinClassRate2mCluttered = 0.0;
 };
 
 // Throws NotAvailableError if a class of kTable43Pairs has no HMM (no training sequences).

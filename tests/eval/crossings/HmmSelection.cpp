@@ -10,16 +10,23 @@ namespace rgnav {
 
 std::vector<HmmCandidate> hmmCandidates() {
   std::vector<HmmCandidate> candidates;
-  for (const Eigen::Index clusters : {6, 8}) {
-    for (const double noise : {0.01, 0.02, 0.05}) {
-      HmmCandidate c;
-      c.config.clusters = clusters;
-      c.config.noiseStdDev = noise;
-      c.validationAccuracy = std::numeric_limits<double>::quiet_NaN();
-      candidates.push_back(c);
+  for (const Eigen::Index clusters : {8, 12}) {
+    for (const double noise : {0.05, 0.03}) {
+      for (const bool learned : {false, true}) {
+        HmmCandidate c;
+        c.config.clusters = clusters;
+        c.config.noiseStdDev = noise;
+        if (learned) c.config.em.learnedCovarianceFloor = noise * noise;
+        c.validationAccuracy = std::numeric_limits<double>::quiet_NaN();
+        candidates.push_back(c);
+      }
     }
   }
   return candidates;
+}
+
+const char* gaussiansName(const HmmTrainingConfig& config) {
+  return config.em.learnedCovarianceFloor ? "learned" : "fixed";
 }
 
 std::size_t selectHmmCandidate(std::vector<HmmCandidate>& candidates, const ClassSequences& fit,

@@ -115,4 +115,24 @@ void printConfusionMatrices(std::ostream& out, const CrossingResults& results) {
   for (std::size_t e = 0; e < environments.size(); ++e) print(environments[e].name, results.environments[e].hmm);
 }
 
+void printFusion(std::ostream& out, const CrossingResults& results) {
+  out << "Bayes fusion per gateway (thesis 4.1.4): every test gateway classified once from the sequences of all\n"
+      << "its approaches; rate = gateways recognised / gateways (not comparable with the per-sequence rates)\n";
+  label(out, "gateway class");
+  for (const GatewayClass c : gatewayClassesOnly()) cell(out, std::string(gatewayClassName(c)));
+  out << "\n";
+  const auto& environments = thesisEnvironments();
+  for (std::size_t e = 0; e < environments.size(); ++e) {
+    const GatewayConfusionMatrix& fused = results.environments[e].fused;
+    label(out, environments[e].name);
+    for (const GatewayClass c : gatewayClassesOnly()) {
+      char text[48];
+      std::snprintf(text, sizeof text, "%s of %zu", rate(fused, c).c_str(), holds(fused, c) ? fused.total(c) : 0);
+      cell(out, text);
+    }
+    out << "\n";
+  }
+  out << "\n";
+}
+
 }  // namespace rgnav

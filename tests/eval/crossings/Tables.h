@@ -2,8 +2,8 @@
 // test sequences per class out of the approaches driven - an approach whose gateway was never
 // tracked gives none -, then the recognition rate of ASC, SOC on the last and on the last but
 // one observation, and of the multi-class HMM), table 4.3 (pairwise HMMs: the rates of the two
-// classes per environment) and the multi-class HMM confusion matrices (all environments, the
-// 2 m cluttered ones, each environment).
+// classes per environment), the multi-class HMM confusion matrices (all environments, the
+// 2 m cluttered ones, each environment) and the rates of the Bayes fusion per gateway.
 #pragma once
 
 #include <ostream>
@@ -16,5 +16,6 @@ namespace rgnav {
 void printTable42(std::ostream& out, const CrossingData& data, const CrossingResults& results);
 void printTable43(std::ostream& out, const CrossingResults& results);
 void printConfusionMatrices(std::ostream& out, const CrossingResults& results);
+void printFusion(std::ostream& out, const CrossingResults& results);
 
 }  // namespace rgnav

@@ -1,0 +1,49 @@
+// Tests the observation vector of a VLM hypothesis: the class weights first, unchanged, then
+// W_d, W_r, the on-line and the over-line measures per sector (left, front, right); a weight
+// vector of the wrong size is rejected; the observer fills it for every hypothesis.
+#include "core/gateways/vlm/ObservationVector.h"
+
+#include <cppunit/extensions/HelperMacros.h>
+
+#include "core/common/Errors.h"
+#include "core/gateways/vlm/VlmObserver.h"
+#include "core/gateways/vlm/testing/JunctionScan.h"
+
+class ObservationVectorTest : public CppUnit::TestFixture {
+  CPPUNIT_TEST_SUITE(ObservationVectorTest);
+  CPPUNIT_TEST(weightsThenMeasures);
+  CPPUNIT_TEST(rejectsAWrongWeightCount);
+  CPPUNIT_TEST(observerFillsTheVector);
+  CPPUNIT_TEST_SUITE_END();
+
+ public:
+  void weightsThenMeasures() {
+    rgnav::SectorFreespace fsm;
+    fsm.onLine = {0.2, 0.9, 1.0};
+    fsm.overLine = {0.7, 0.1, 0.0};
+    const std::vector<double> weights{0.1, 0.2, 0.3, 0.4, 0.5, 0.6, 0.7, 0.8};
+    const std::vector<double> v = rgnav::observationVector(weights, 0.8, 0.9, fsm);
+    CPPUNIT_ASSERT_EQUAL(rgnav::kObservationSize, v.size());
+    CPPUNIT_ASSERT_EQUAL(std::size_t{16}, v.size());
+    const std::vector<double> expected{0.1, 0.2, 0.3, 0.4, 0.5, 0.6, 0.7, 0.8, 0.8, 0.9, 0.2, 0.9, 1.0, 0.7, 0.1, 0.0};
+    CPPUNIT_ASSERT(v == expected);
+  }
+
+  void rejectsAWrongWeightCount() {
+    CPPUNIT_ASSERT_THROW(rgnav::observationVector({0.1, 0.2}, 0.8, 0.9, {}), rgnav::InvalidArgumentError);
+  }
+
+  void observerFillsTheVector() {
+    const rgnav::Pose2D pose{-2.5, 0.1, 0.0};
+    const rgnav::VlmObserver observer;
+    const auto observations =
+        observer.observe(rgnav::testing::junctionScan(rgnav::GatewayClass::TJunction, 2.0, pose, 0.01, 3));
+    CPPUNIT_ASSERT(!observations.empty());
+    for (const rgnav::VlmObservation& o : observations) {
+      CPPUNIT_ASSERT(o.observation ==
+                     rgnav::observationVector(o.weights, o.distanceMeasure, o.rectangularityMeasure, o.freespace));
+    }
+  }
+};
+
+CPPUNIT_TEST_SUITE_REGISTRATION(ObservationVectorTest);
