@@ -2,10 +2,6 @@
 #include "servers/scanmapper/ScanMapperService.h"
 
 #include <algorithm>
-#include <chrono>
-#include <filesystem>
-#include <fstream>
-#include <sstream>
 
 #include "clientlibs/common/ClientConnection.h"
 #include "core/common/AtomicFile.h"
@@ -15,16 +11,11 @@ namespace rgnav {
 
 namespace {
 
-constexpr auto kIdlePoll = std::chrono::milliseconds(10);
-
 SlamState loadCheckpoint(const std::string& file) {
-  if (file.empty() || !std::filesystem::exists(file)) return {};
-  std::ifstream in(file, std::ios::binary);
-  std::ostringstream bytes;
-  bytes << in.rdbuf();
-  if (!in.good() && !in.eof()) throw FileError(file + ": cannot read the checkpoint");
+  const std::optional<std::string> saved = readCheckpoint(file);
+  if (!saved) return {};
   try {
-    return deserializeState(bytes.str());
+    return deserializeState(*saved);
   } catch (const CorruptStateError& e) {
     throw CorruptStateError(file + ": " + e.what());
   }
@@ -38,36 +29,23 @@ ScanMapperService::ScanMapperService(const SlamConfig& config, const ClientSetti
       laser_(laserSettings, laserObject),
       health_(health),
       mapper_(config, loadCheckpoint(options_.checkpointFile)),
-      scans_(options_.bufferCapacity) {
+      scans_(options_.bufferCapacity),
+      follower_(health, "laser", [this] { return step(); }) {
   health_.set("resumed_after_scan", mapper_.lastInputId());
 }
 
 ScanMapperService::~ScanMapperService() { stop(); }
 
-void ScanMapperService::start() {
-  follower_ = std::thread([this] { follow(); });
-}
+void ScanMapperService::start() { follower_.start(); }
 
-void ScanMapperService::stop() {
-  stopping_ = true;
-  if (follower_.joinable()) follower_.join();
-}
+void ScanMapperService::stop() { follower_.stop(); }
 
-void ScanMapperService::follow() {
-  bool refilled = false;
-  while (!stopping_) {
-    try {
-      if (!refilled) {
-        refillBuffer();
-        refilled = true;
-      }
-      if (!followOnce()) std::this_thread::sleep_for(kIdlePoll);
-      health_.clearError("laser");
-    } catch (const Error& e) {
-      health_.setError("laser", e.what());  // the Laser module is away: keep trying
-      std::this_thread::sleep_for(kIdlePoll * 10);
-    }
+bool ScanMapperService::step() {
+  if (!refilled_) {
+    refillBuffer();
+    refilled_ = true;
   }
+  return followOnce();
 }
 
 void ScanMapperService::refillBuffer() {
@@ -77,7 +55,7 @@ void ScanMapperService::refillBuffer() {
     last = mapper_.lastInputId();
   }
   DataId after = last > options_.bufferCapacity ? last - options_.bufferCapacity : 0;
-  while (after < last && !stopping_) {
+  while (after < last && !follower_.stopping()) {
     const auto batch = laser_.scansSince(after, std::min<std::uint32_t>(options_.fetchBatch, static_cast<std::uint32_t>(last - after)));
     if (batch.records.empty()) break;  // no longer held by the Laser module
     for (const LaserScan& scan : batch.records) {

@@ -6,17 +6,15 @@
 // continues bit for bit as if it had not stopped, so no scan is lost or processed twice.
 #pragma once
 
-#include <atomic>
 #include <mutex>
 #include <optional>
 #include <string>
-#include <thread>
 
 #include "clientlibs/laser/LaserClient.h"
 #include "clientlibs/scanmapper/CorrectedScans.h"
 #include "core/common/DataBuffer.h"
 #include "core/slam/ScanMapper.h"
-#include "servers/common/ModuleHealth.h"
+#include "servers/common/InputFollower.h"
 
 namespace rgnav {
 
@@ -48,7 +46,7 @@ class ScanMapperService {
   std::uint64_t revision();
 
  private:
-  void follow();
+  bool step();                  // refills the buffer once, then followOnce()
   bool followOnce();            // false when there was nothing new
   void refillBuffer();          // after a restart: the scans the checkpoint covers
   void keep(const LaserScan& scan);
@@ -62,8 +60,8 @@ class ScanMapperService {
   ScanMapper mapper_;
   DataBuffer<LaserScan> scans_;
   bool finished_ = false;  // the input ended and the final optimisation ran
-  std::atomic<bool> stopping_{false};
-  std::thread follower_;
+  bool refilled_ = false;
+  InputFollower follower_;  // last: it stops before the rest goes
 };
 
 }  // namespace rgnav

@@ -44,4 +44,51 @@ std::string formatCorrected(const CorrectedScan& scan) {
   return line;
 }
 
+namespace {
+
+const char* eventKindName(GatewayEventKind kind) {
+  switch (kind) {
+    case GatewayEventKind::Detected: return "detected";
+    case GatewayEventKind::Updated: return "updated";
+    case GatewayEventKind::Traversed: break;
+  }
+  return "traversed";
+}
+
+std::string pointList(const std::vector<Eigen::Vector2d>& points) {
+  std::string out;
+  char buffer[64];
+  for (const Eigen::Vector2d& p : points) {
+    std::snprintf(buffer, sizeof buffer, "%s%.3f,%.3f", out.empty() ? "" : ";", p.x(), p.y());
+    out += buffer;
+  }
+  return out;
+}
+
+std::string gatewayFields(const GatewayRecord& g) {
+  char buffer[160];
+  std::snprintf(buffer, sizeof buffer, "%llu %s %.3f width=%.2f points=", static_cast<unsigned long long>(g.id),
+                g.label().c_str(), g.classes.front().probability, g.widthM);
+  std::string out = buffer + pointList(g.gatewayPoints);
+  std::snprintf(buffer, sizeof buffer, " seen=%llu-%llu", static_cast<unsigned long long>(g.firstScan),
+                static_cast<unsigned long long>(g.lastScan));
+  return out + buffer;
+}
+
+}  // namespace
+
+std::string formatGatewayEvent(const GatewayEvent& e) {
+  std::string out = "gateway " + std::to_string(e.id) + " scan=" + std::to_string(e.scanId) + " " +
+                    eventKindName(e.kind) + " " + gatewayFields(e.gateway);
+  if (e.kind != GatewayEventKind::Traversed) return out;
+  char buffer[128];
+  std::snprintf(buffer, sizeof buffer, " from=%zu to=%zu at=%.3f,%.3f", e.traversal.fromSide, e.traversal.toSide,
+                e.traversal.at.x(), e.traversal.at.y());
+  return out + buffer;
+}
+
+std::string formatGateway(const GatewayRecord& g) {
+  return gatewayFields(g) + " support=" + std::to_string(g.support) + " traversals=" + std::to_string(g.traversals);
+}
+
 }  // namespace rgnav

@@ -3,6 +3,7 @@
 
 #include <string>
 
+#include "clientlibs/gatewaydetection/GatewayEventBatch.h"
 #include "clientlibs/scanmapper/CorrectedScans.h"
 #include "core/common/SensorData.h"
 
@@ -14,9 +15,15 @@ std::string formatScan(const LaserScan& scan);
 std::string formatOdometry(const OdometryReading& odometry);
 // "corrected <id> <stamp> <x> <y> <theta> <keyframe 0|1>" (the corrected pose in the map frame)
 std::string formatCorrected(const CorrectedScan& scan);
+// "gateway <event id> scan=<id> detected|updated|traversed <gateway id> <label> <p> width=<m>
+//  points=<x>,<y>;... seen=<first>-<last> [from=<side> to=<side> at=<x>,<y>]" (odometry frame)
+std::string formatGatewayEvent(const GatewayEvent& event);
+// "<gateway id> <label> <p> width=<m> points=... seen=<first>-<last> support=<n> traversals=<n>"
+std::string formatGateway(const GatewayRecord& gateway);
 
 inline DataId recordId(const LaserScan& scan) { return scan.id; }
 inline DataId recordId(const OdometryReading& odometry) { return odometry.id; }
 inline DataId recordId(const CorrectedScan& scan) { return scan.scan.id; }
+inline DataId recordId(const GatewayEvent& event) { return event.id; }
 
 }  // namespace rgnav

@@ -2,12 +2,16 @@
 // the first real consumer of the data path. It resumes after restarts of the producer (the
 // client library reconnects), checks that IDs arrive once and in order, and ends with a summary:
 //   cat laser: received=910 first=1 last=910 gaps=0 duplicates=0 reconnects=3
+// For the gateway events of the GatewayDetection module it then lists the gateways and counts
+// them by class: "gateways: total=… narrow_passages=… hallway=… <class>=…".
 #include <chrono>
 #include <fstream>
 #include <iostream>
+#include <map>
 #include <thread>
 
 #include "clientlibs/base/BaseClient.h"
+#include "clientlibs/gatewaydetection/GatewayDetectionClient.h"
 #include "clientlibs/laser/LaserClient.h"
 #include "clientlibs/scanmapper/ScanMapperClient.h"
 #include "tools/cat/IdSequenceCheck.h"
@@ -56,15 +60,30 @@ int follow(const Options& options, Fetch fetch, Format format, const std::functi
   return check.clean() ? 0 : 1;
 }
 
+// The gateways with their classes, and a count by class.
+void printGatewaySummary(const std::vector<rgnav::GatewayRecord>& gateways) {
+  std::map<std::string, std::size_t> byClass;
+  std::size_t passages = 0;
+  for (const rgnav::GatewayRecord& g : gateways) {
+    std::cout << "  " << rgnav::formatGateway(g) << '\n';
+    ++byClass[g.label()];
+    passages += g.kind == rgnav::GatewayKind::NarrowPassage;
+  }
+  std::cout << "gateways: total=" << gateways.size() << " narrow_passages=" << passages
+            << " hallway=" << gateways.size() - passages;
+  for (const auto& [name, count] : byClass) std::cout << ' ' << name << '=' << count;
+  std::cout << std::endl;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
   Options options;
   std::string naming, robot, consumer;
-  po::options_description desc("rgnav-cat <laser|odometry|corrected> [options]");
+  po::options_description desc("rgnav-cat <laser|odometry|corrected|gateways> [options]");
   desc.add_options()
       ("help", "this text")
-      ("stream", po::value(&options.stream)->required(), "laser, odometry or corrected (ScanMapper)")
+      ("stream", po::value(&options.stream)->required(), "laser, odometry, corrected (ScanMapper) or gateways (GatewayDetection events)")
       ("naming", po::value(&naming)->default_value(""), "naming service host:port (default: RGNAV_NAMING or 127.0.0.1:2809)")
       ("robot", po::value(&robot)->default_value(""), "robot name (default: RGNAV_ROBOT or tumbot)")
       ("consumer", po::value(&consumer)->default_value("rgnav-cat"),
@@ -105,7 +124,20 @@ int main(int argc, char** argv) {
       return follow(options, [&](rgnav::DataId after, std::uint32_t n) { return base.odometrySince(after, n); },
                     rgnav::formatOdometry, [&] { return base.reconnects(); });
     }
-    throw rgnav::InvalidArgumentError("unknown stream '" + options.stream + "' (laser, odometry or corrected)");
+    if (options.stream == "gateways") {
+      rgnav::GatewayDetectionClient detection(settings);
+      const int code = follow(
+          options,
+          [&](rgnav::DataId after, std::uint32_t n) {
+            rgnav::GatewayEventBatch batch = detection.eventsSince(after, n);
+            return rgnav::DataBatch<rgnav::GatewayEvent>{std::move(batch.events), 0, batch.latestId, batch.endOfData};
+          },
+          rgnav::formatGatewayEvent, [&] { return detection.reconnects(); });
+      printGatewaySummary(detection.gateways());
+      return code;
+    }
+    throw rgnav::InvalidArgumentError("unknown stream '" + options.stream +
+                                      "' (laser, odometry, corrected or gateways)");
   } catch (const po::error& e) {
     std::cerr << "rgnav-cat: " << e.what() << "\n" << desc << std::endl;
   } catch (const std::exception& e) {

@@ -3,9 +3,9 @@
 
 #include <algorithm>
 #include <cmath>
-#include <iterator>
 #include <optional>
 #include <string>
+#include <utility>
 
 #include "core/common/Errors.h"
 #include "core/gateways/passages/SegmentCrossing.h"
@@ -30,28 +30,30 @@ void validate(const PassageTrackerConfig& config) {
 
 PassageTracker::PassageTracker(const PassageTrackerConfig& config) : config_(config) { validate(config_); }
 
+PassageTracker::PassageTracker(const PassageTrackerConfig& config, PassageTrackerState state)
+    : config_(config), state_(std::move(state)) {
+  validate(config_);
+}
+
 TrackerUpdate PassageTracker::update(DataId scanId, const Pose2D& robotPose,
                                      const std::vector<PassageHypothesis>& hypotheses) {
-  ++updates_;
+  ++state_.updates;
   TrackerUpdate out;
   traverse(scanId, robotPose, out);
-  for (const PassageHypothesis& h : hypotheses) associate(h, out);
-  for (std::size_t i = tracks_.size(); i-- > 0;) {
-    if (tracks_[i].confirmed || updates_ - sums_[i].lastUpdate < config_.forgetAfterUpdates) continue;
-    tracks_.erase(tracks_.begin() + static_cast<std::ptrdiff_t>(i));
-    sums_.erase(sums_.begin() + static_cast<std::ptrdiff_t>(i));
-  }
+  for (const PassageHypothesis& h : hypotheses) associate(h, robotPose, out);
+  std::erase_if(state_.tracks, [&](const PassageTrackState& t) {
+    return !t.gateway.confirmed && state_.updates - t.lastUpdate >= config_.forgetAfterUpdates;
+  });
   return out;
 }
 
 void PassageTracker::traverse(DataId scanId, const Pose2D& robotPose, TrackerUpdate& out) {
-  const Eigen::Vector2d from(lastPose_.x, lastPose_.y), to(robotPose.x, robotPose.y);
-  const bool moved = hasPose_;
-  hasPose_ = true;
-  lastPose_ = robotPose;
-  if (!moved) return;
-  for (std::size_t i = 0; i < tracks_.size(); ++i) {
-    TrackedGateway& g = tracks_[i];
+  const std::optional<Pose2D> last = state_.lastPose;
+  state_.lastPose = robotPose;
+  if (!last) return;
+  const Eigen::Vector2d from(last->x, last->y), to(robotPose.x, robotPose.y);
+  for (PassageTrackState& t : state_.tracks) {
+    TrackedGateway& g = t.gateway;
     if (!g.confirmed) continue;
     const auto at = segmentCrossing(from, to, g.left, g.right);
     if (!at) continue;
@@ -62,50 +64,62 @@ void PassageTracker::traverse(DataId scanId, const Pose2D& robotPose, TrackerUpd
   }
 }
 
-void PassageTracker::associate(const PassageHypothesis& h, TrackerUpdate& out) {
-  std::optional<std::size_t> best;
+void PassageTracker::associate(const PassageHypothesis& h, const Pose2D& robotPose, TrackerUpdate& out) {
+  PassageTrackState* best = nullptr;
   bool bestSwapped = false;
   double bestCost = config_.associationDistanceM;
-  for (std::size_t i = 0; i < tracks_.size(); ++i) {
-    const TrackedGateway& g = tracks_[i];
+  for (PassageTrackState& t : state_.tracks) {
+    const TrackedGateway& g = t.gateway;
     const double straight = std::max((h.left - g.left).norm(), (h.right - g.right).norm());
     const double swapped = std::max((h.left - g.right).norm(), (h.right - g.left).norm());
     const double cost = std::min(straight, swapped);
     if (cost <= bestCost) {
-      best = i;
+      best = &t;
       bestCost = cost;
       bestSwapped = swapped < straight;
     }
   }
   if (!best) {
-    best = tracks_.size();
-    tracks_.push_back({nextId_++});
-    tracks_.back().firstScan = h.scanId;
-    sums_.emplace_back();
+    best = &state_.tracks.emplace_back();
+    best->gateway.id = state_.nextId++;
+    best->gateway.firstScan = h.scanId;
   }
-  TrackedGateway& g = tracks_[*best];
-  Sums& s = sums_[*best];
-  s.left += bestSwapped ? h.right : h.left;
-  s.right += bestSwapped ? h.left : h.right;
-  s.confidence += h.confidence;
+  PassageTrackState& t = *best;
+  TrackedGateway& g = t.gateway;
+  t.leftSum += bestSwapped ? h.right : h.left;
+  t.rightSum += bestSwapped ? h.left : h.right;
+  t.confidenceSum += h.confidence;
   ++g.observations;
-  g.left = s.left / double(g.observations);
-  g.right = s.right / double(g.observations);
-  g.meanConfidence = s.confidence / double(g.observations);
+  g.left = t.leftSum / double(g.observations);
+  g.right = t.rightSum / double(g.observations);
+  g.meanConfidence = t.confidenceSum / double(g.observations);
   g.lastScan = h.scanId;
-  if (s.lastUpdate != updates_) ++g.support;
-  s.lastUpdate = updates_;
+  g.lastRobotPose = robotPose;
+  if (t.lastUpdate != state_.updates) ++g.support;
+  t.lastUpdate = state_.updates;
   if (!g.confirmed && g.support >= config_.minSupport) {
     g.confirmed = true;
     out.confirmed.push_back(g.id);
   }
 }
 
+std::vector<TrackedGateway> PassageTracker::tracks() const {
+  std::vector<TrackedGateway> all;
+  for (const PassageTrackState& t : state_.tracks) all.push_back(t.gateway);
+  return all;
+}
+
 std::vector<TrackedGateway> PassageTracker::gateways() const {
   std::vector<TrackedGateway> confirmed;
-  std::copy_if(tracks_.begin(), tracks_.end(), std::back_inserter(confirmed),
-               [](const TrackedGateway& g) { return g.confirmed; });
+  for (const PassageTrackState& t : state_.tracks)
+    if (t.gateway.confirmed) confirmed.push_back(t.gateway);
   return confirmed;
+}
+
+const TrackedGateway* PassageTracker::find(GatewayId id) const {
+  for (const PassageTrackState& t : state_.tracks)
+    if (t.gateway.id == id) return &t.gateway;
+  return nullptr;
 }
 
 }  // namespace rgnav

@@ -15,6 +15,7 @@
 #include <Eigen/Core>
 #include <cstddef>
 #include <cstdint>
+#include <optional>
 #include <vector>
 
 #include "core/common/Pose2D.h"
@@ -42,6 +43,7 @@ struct TrackedGateway {
   std::size_t observations = 0;
   DataId firstScan = 0;
   DataId lastScan = 0;
+  Pose2D lastRobotPose;  // the robot's pose at lastScan, as given to update()
   bool confirmed = false;
   std::size_t traversals = 0;
 
@@ -56,6 +58,21 @@ struct GatewayTraversal {
   bool fromObservedSide = false;  // from the side the gateway was first seen from to the other
 };
 
+// Everything a tracker knows, so that a module can checkpoint it and resume exactly.
+struct PassageTrackState {
+  TrackedGateway gateway;
+  Eigen::Vector2d leftSum = Eigen::Vector2d::Zero(), rightSum = Eigen::Vector2d::Zero();
+  double confidenceSum = 0.0;
+  std::size_t lastUpdate = 0;  // the update that last brought a hypothesis
+};
+
+struct PassageTrackerState {
+  std::vector<PassageTrackState> tracks;  // in the order they were started
+  std::size_t updates = 0;
+  GatewayId nextId = 1;
+  std::optional<Pose2D> lastPose;  // the robot's pose at the last update
+};
+
 struct TrackerUpdate {
   std::vector<GatewayId> confirmed;  // gateways confirmed by this update
   std::vector<GatewayTraversal> traversals;
@@ -65,32 +82,26 @@ class PassageTracker {
  public:
   // Throws ConfigError for a bad configuration.
   explicit PassageTracker(const PassageTrackerConfig& config = {});
+  // Resumes from a saved state. Throws ConfigError for a bad configuration.
+  PassageTracker(const PassageTrackerConfig& config, PassageTrackerState state);
 
   // The hypotheses of scan `scanId`, taken with the robot at `robotPose` (world frame, the
   // frame of the hypotheses). Updates must come in scan order.
   TrackerUpdate update(DataId scanId, const Pose2D& robotPose, const std::vector<PassageHypothesis>& hypotheses);
 
   // Every live track, confirmed or not, in the order they were started.
-  const std::vector<TrackedGateway>& tracks() const { return tracks_; }
+  std::vector<TrackedGateway> tracks() const;
   std::vector<TrackedGateway> gateways() const;  // the confirmed ones
+  // The track of gateway `id`, or nullptr.
+  const TrackedGateway* find(GatewayId id) const;
+  const PassageTrackerState& state() const { return state_; }
 
  private:
-  struct Sums {
-    Eigen::Vector2d left = Eigen::Vector2d::Zero(), right = Eigen::Vector2d::Zero();
-    double confidence = 0.0;
-    std::size_t lastUpdate = 0;
-  };
-
   void traverse(DataId scanId, const Pose2D& robotPose, TrackerUpdate& out);
-  void associate(const PassageHypothesis& hypothesis, TrackerUpdate& out);
+  void associate(const PassageHypothesis& hypothesis, const Pose2D& robotPose, TrackerUpdate& out);
 
   PassageTrackerConfig config_;
-  std::vector<TrackedGateway> tracks_;
-  std::vector<Sums> sums_;  // parallel to tracks_
-  std::size_t updates_ = 0;
-  GatewayId nextId_ = 1;
-  bool hasPose_ = false;
-  Pose2D lastPose_;
+  PassageTrackerState state_;
 };
 
 }  // namespace rgnav

@@ -1,0 +1,28 @@
+// GatewayDetectionClient: the gateway hypothesis buffer of the GatewayDetection module, by event
+// ID, and its current gateways.
+#pragma once
+
+#include <vector>
+
+#include "GatewayDetection.hh"
+#include "clientlibs/common/ModuleClient.h"
+#include "clientlibs/gatewaydetection/GatewayEventBatch.h"
+
+namespace rgnav {
+
+class GatewayDetectionClient : public ModuleClientOf<RGNav::GatewayDetection> {
+ public:
+  explicit GatewayDetectionClient(ClientSettings settings = ClientSettings::fromEnvironment(),
+                                  std::string objectName = "GatewayDetection");
+
+  GatewayEventBatch eventsSince(GatewayEventId afterId, std::uint32_t maxCount);
+  std::vector<GatewayRecord> gateways();
+  GatewayRecord gateway(GatewayId id);
+  DataId lastProcessedScan();
+  bool detectsHallways();
+
+ private:
+  std::string consumer_;
+};
+
+}  // namespace rgnav

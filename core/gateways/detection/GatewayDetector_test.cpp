@@ -1,0 +1,161 @@
+// Tests the GatewayDetection module's core: a robot driving through a door reports the narrow
+// passage once, then its traversal from the side it was seen from; a robot turning left at a
+// hallway turn reports an L-Turn area (the trained HMMs of config/gateways) and its traversal
+// from the entrance to the left side; a detector resumed from a serialized checkpoint goes on
+// with exactly the events of one that never stopped; scans out of order and damaged
+// checkpoints are typed errors.
+#include "core/gateways/detection/GatewayDetector.h"
+
+#include <cppunit/extensions/HelperMacros.h>
+
+#include <cstdlib>
+#include <string>
+
+#include "core/common/Errors.h"
+#include "core/gateways/classify/HmmModelFile.h"
+#include "core/gateways/detection/DetectionStateCodec.h"
+#include "core/gateways/vlm/testing/JunctionScan.h"
+#include "core/lines/testing/SyntheticScan.h"
+
+using Eigen::Vector2d;
+using namespace rgnav;
+using rgnav::testing::syntheticScan;
+using rgnav::testing::Wall;
+
+namespace {
+
+// A hallway along x (y = ±1.5) ending in a wall at x = 2 with a 0.9 m door into a 4 x 4 m room.
+std::vector<Wall> hallwayWithDoor() {
+  return {{{-4, -1.5}, {2, -1.5}}, {{-4, 1.5}, {2, 1.5}}, {{2, -1.5}, {2, -0.45}}, {{2, 0.45}, {2, 1.5}},
+          {{2, -2}, {6, -2}},      {{2, 2}, {6, 2}},      {{6, -2}, {6, 2}},        {{2, -2}, {2, -1.5}},
+          {{2, 1.5}, {2, 2}},      {{-4, -1.5}, {-4, 1.5}}};
+}
+
+// The robot's poses from x = -2 through the door to x = 4, 5 cm apart.
+std::vector<Pose2D> throughTheDoor() {
+  std::vector<Pose2D> poses;
+  for (int i = 0; i <= 120; ++i) poses.push_back({-2.0 + 0.05 * i, 0.0, 0.0});
+  return poses;
+}
+
+LaserScan scanAt(const Pose2D& pose, DataId id) {
+  LaserScan scan = syntheticScan(hallwayWithDoor(), pose);
+  scan.id = id;
+  return scan;
+}
+
+std::vector<GatewayEvent> drive(GatewayDetector& detector, const std::vector<Pose2D>& poses, std::size_t from,
+                                std::size_t to) {
+  std::vector<GatewayEvent> events;
+  for (std::size_t i = from; i < to; ++i)
+    for (GatewayEvent& e : detector.addScan(scanAt(poses[i], i + 1), poses[i])) events.push_back(std::move(e));
+  return events;
+}
+
+HmmClassifier trainedModels() {
+  const char* root = std::getenv("RGNAV_ROOT");
+  CPPUNIT_ASSERT_MESSAGE("RGNAV_ROOT must name the source tree", root != nullptr);
+  return loadHmmModels(std::string(root) + "/config/gateways/gateway-hmms.txt");
+}
+
+}  // namespace
+
+class GatewayDetectorTest : public CppUnit::TestFixture {
+  CPPUNIT_TEST_SUITE(GatewayDetectorTest);
+  CPPUNIT_TEST(doorIsReportedOnceThenTraversed);
+  CPPUNIT_TEST(leftTurnIsClassifiedAndTraversed);
+  CPPUNIT_TEST(resumedDetectorContinuesExactly);
+  CPPUNIT_TEST(scansOutOfOrderAreRejected);
+  CPPUNIT_TEST(damagedCheckpointIsAFormatError);
+  CPPUNIT_TEST_SUITE_END();
+
+ public:
+  void doorIsReportedOnceThenTraversed() {
+    GatewayDetector detector({}, std::nullopt);
+    const std::vector<GatewayEvent> events = drive(detector, throughTheDoor(), 0, throughTheDoor().size());
+    std::size_t detected = 0, traversed = 0;
+    for (const GatewayEvent& e : events) {
+      CPPUNIT_ASSERT(e.gateway.kind == GatewayKind::NarrowPassage);
+      CPPUNIT_ASSERT_EQUAL(GatewayId(1), e.gateway.id);
+      if (e.kind == GatewayEventKind::Detected) {
+        ++detected;
+        CPPUNIT_ASSERT_EQUAL(std::string(kNarrowPassageClass), e.gateway.label());
+        CPPUNIT_ASSERT_DOUBLES_EQUAL(0.9, e.gateway.widthM, 0.05);
+        // Crossing point 0 lies on the side it was seen from: the hallway.
+        CPPUNIT_ASSERT(e.gateway.crossingPoints[0].x() < 2.0 && e.gateway.crossingPoints[1].x() > 2.0);
+      } else if (e.kind == GatewayEventKind::Traversed) {
+        ++traversed;
+        CPPUNIT_ASSERT(detected == 1);
+        CPPUNIT_ASSERT_EQUAL(std::size_t(0), e.traversal.fromSide);
+        CPPUNIT_ASSERT_EQUAL(std::size_t(1), e.traversal.toSide);
+        CPPUNIT_ASSERT_DOUBLES_EQUAL(2.0, e.traversal.at.x(), 0.06);
+        CPPUNIT_ASSERT_DOUBLES_EQUAL(1.0, e.traversal.direction.x(), 0.01);
+      }
+    }
+    CPPUNIT_ASSERT_EQUAL(std::size_t(1), detected);
+    CPPUNIT_ASSERT_EQUAL(std::size_t(1), traversed);
+    CPPUNIT_ASSERT_EQUAL(std::size_t(1), detector.gateways().size());
+    for (std::size_t i = 1; i < events.size(); ++i) CPPUNIT_ASSERT_EQUAL(events[i - 1].id + 1, events[i].id);
+  }
+
+  void leftTurnIsClassifiedAndTraversed() {
+    GatewayDetector detector({}, trainedModels());
+    std::vector<Pose2D> path;
+    for (int i = 0; i <= 120; ++i) path.push_back({-6.0 + 0.05 * i, 0.0, 0.0});
+    for (int i = 1; i <= 80; ++i) path.push_back({0.0, 0.05 * i, M_PI / 2});
+    std::vector<GatewayEvent> events;
+    for (std::size_t i = 0; i < path.size(); ++i) {
+      LaserScan scan = rgnav::testing::junctionScan(GatewayClass::LTurn, 2.0, path[i]);
+      scan.id = i + 1;
+      for (GatewayEvent& e : detector.addScan(scan, path[i])) events.push_back(std::move(e));
+    }
+    const std::vector<GatewayRecord> gateways = detector.gateways();
+    CPPUNIT_ASSERT_EQUAL(std::size_t(1), gateways.size());
+    CPPUNIT_ASSERT(gateways[0].kind == GatewayKind::HallwayArea);
+    CPPUNIT_ASSERT_EQUAL(std::string("L-Turn"), gateways[0].label());
+    CPPUNIT_ASSERT_EQUAL(std::size_t(4), gateways[0].crossingPoints.size());
+    std::size_t traversed = 0;
+    for (const GatewayEvent& e : events) {
+      if (e.kind != GatewayEventKind::Traversed) continue;
+      ++traversed;
+      CPPUNIT_ASSERT_EQUAL(std::size_t(0), e.traversal.fromSide);  // the entrance
+      CPPUNIT_ASSERT_EQUAL(std::size_t(1), e.traversal.toSide);    // the left side
+    }
+    CPPUNIT_ASSERT_EQUAL(std::size_t(1), traversed);
+  }
+
+  void resumedDetectorContinuesExactly() {
+    const std::vector<Pose2D> poses = throughTheDoor();
+    GatewayDetector whole({}, std::nullopt);
+    const std::vector<GatewayEvent> expected = drive(whole, poses, 0, poses.size());
+    for (const std::size_t stop : {std::size_t(10), std::size_t(60), std::size_t(80)}) {
+      GatewayDetector first({}, std::nullopt);
+      std::vector<GatewayEvent> events = drive(first, poses, 0, stop);
+      const DetectionCheckpoint saved = deserializeDetection(serializeDetection({first.state(), events}));
+      CPPUNIT_ASSERT(saved.events == events);
+      GatewayDetector resumed({}, std::nullopt, saved.detector);
+      CPPUNIT_ASSERT_EQUAL(DataId(stop), resumed.lastScan());
+      for (GatewayEvent& e : drive(resumed, poses, stop, poses.size())) events.push_back(std::move(e));
+      CPPUNIT_ASSERT(events == expected);
+    }
+  }
+
+  void scansOutOfOrderAreRejected() {
+    GatewayDetector detector({}, std::nullopt);
+    detector.addScan(scanAt({}, 5), {});
+    CPPUNIT_ASSERT_THROW(detector.addScan(scanAt({}, 5), {}), InvalidArgumentError);
+    CPPUNIT_ASSERT_THROW(detector.addScan(scanAt({}, 4), {}), InvalidArgumentError);
+  }
+
+  void damagedCheckpointIsAFormatError() {
+    GatewayDetector detector({}, std::nullopt);
+    const std::string good = serializeDetection({detector.state(), {}});
+    CPPUNIT_ASSERT_THROW(deserializeDetection(good.substr(0, good.size() / 2)), FormatError);
+    CPPUNIT_ASSERT_THROW(deserializeDetection("{\"format\": \"something else\"}"), FormatError);
+    std::string otherVersion = good;
+    otherVersion.replace(otherVersion.find("\"version\":1"), 11, "\"version\":9");
+    CPPUNIT_ASSERT_THROW(deserializeDetection(otherVersion), FormatError);
+  }
+};
+
+CPPUNIT_TEST_SUITE_REGISTRATION(GatewayDetectorTest);

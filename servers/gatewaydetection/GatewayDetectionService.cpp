@@ -1,0 +1,115 @@
+// The GatewayDetection module's follower, event buffer and checkpoints (see
+// GatewayDetectionService.h).
+#include "servers/gatewaydetection/GatewayDetectionService.h"
+
+#include <algorithm>
+
+#include "core/common/AtomicFile.h"
+#include "core/gateways/detection/DetectionStateCodec.h"
+
+namespace rgnav {
+namespace {
+
+DetectionCheckpoint loadCheckpoint(const std::string& file) {
+  const std::optional<std::string> saved = readCheckpoint(file);
+  if (!saved) return {};
+  try {
+    return deserializeDetection(*saved);
+  } catch (const FormatError& e) {
+    throw FormatError(file, 0, e.what());
+  }
+}
+
+}  // namespace
+
+GatewayDetectionService::GatewayDetectionService(const GatewayDetectorConfig& config,
+                                                 std::optional<HmmClassifier> classifier,
+                                                 const ClientSettings& laserSettings, const std::string& laserObject,
+                                                 GatewayDetectionServiceOptions options, ModuleHealth& health)
+    : options_(std::move(options)), laser_(laserSettings, laserObject),
+      health_(health),
+      events_(options_.eventCapacity),
+      follower_(health, "laser", [this] { return followOnce(); }) {
+  DetectionCheckpoint saved = loadCheckpoint(options_.checkpointFile);
+  for (GatewayEvent& e : saved.events) events_.push(std::move(e));
+  detector_ = std::make_unique<GatewayDetector>(config, std::move(classifier), std::move(saved.detector));
+  health_.set("resumed_after_scan", detector_->lastScan());
+}
+
+GatewayDetectionService::~GatewayDetectionService() { stop(); }
+
+void GatewayDetectionService::start() { follower_.start(); }
+
+void GatewayDetectionService::stop() { follower_.stop(); }
+
+bool GatewayDetectionService::followOnce() {
+  DataId last;
+  {
+    std::lock_guard lock(mutex_);
+    if (finished_) return false;
+    last = detector_->lastScan();
+  }
+  const DataBatch<LaserScan> batch = laser_.scansSince(last, options_.fetchBatch);
+  if (batch.records.empty()) {
+    if (batch.endOfData && last >= batch.latestId) {
+      std::lock_guard lock(mutex_);
+      finished_ = true;
+      events_.markEndOfData();
+    }
+    return false;
+  }
+  if (batch.records.front().id != last + 1) health_.add("scans_missed", batch.records.front().id - last - 1);
+  std::lock_guard lock(mutex_);
+  for (const LaserScan& scan : batch.records) {
+    for (GatewayEvent& e : detector_->addScan(scan, scan.odometry)) {
+      health_.add(e.kind == GatewayEventKind::Traversed ? "traversals" : "gateway_reports");
+      events_.push(std::move(e));
+    }
+    health_.add("scans_processed");
+  }
+  checkpoint();
+  return true;
+}
+
+void GatewayDetectionService::checkpoint() {
+  if (options_.checkpointFile.empty()) return;
+  try {
+    const std::vector<GatewayEvent> events(events_.records().begin(), events_.records().end());
+    writeFileAtomically(options_.checkpointFile, serializeDetection({detector_->state(), events}));
+    health_.clearError("checkpoint");
+  } catch (const FileError& e) {
+    health_.setError("checkpoint", e.what());
+  }
+}
+
+GatewayEventBatch GatewayDetectionService::eventsSince(GatewayEventId afterId, std::size_t maxCount) {
+  std::lock_guard lock(mutex_);
+  const DataBatch<GatewayEvent> batch = events_.since(afterId, maxCount);
+  GatewayEventBatch out{batch.records, batch.latestId, detector_->lastScan(), false};
+  out.endOfData = finished_ && (out.events.empty() ? afterId : out.events.back().id) >= out.latestId;
+  return out;
+}
+
+std::vector<GatewayRecord> GatewayDetectionService::gateways() {
+  std::lock_guard lock(mutex_);
+  return detector_->gateways();
+}
+
+GatewayRecord GatewayDetectionService::gateway(GatewayId id) {
+  std::lock_guard lock(mutex_);
+  for (GatewayRecord& g : detector_->gateways())
+    if (g.id == id) return g;
+  throw NotAvailableError("no gateway " + std::to_string(id) + " (yet)");
+}
+
+DataId GatewayDetectionService::lastProcessedScan() {
+  std::lock_guard lock(mutex_);
+  return detector_->lastScan();
+}
+
+bool GatewayDetectionService::detectsHallways() {
+  std::lock_guard lock(mutex_);
+  return detector_->detectsHallways();
+}
+
+}  // namespace rgnav
