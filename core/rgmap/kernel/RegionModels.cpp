@@ -1,0 +1,88 @@
+// Cached line maps and descriptions of the regions; see RegionModels.h.
+#include "core/rgmap/kernel/RegionModels.h"
+
+#include <algorithm>
+
+#include "core/common/Errors.h"
+#include "core/rgmap/kernel/GatewayGeometry.h"
+
+namespace rgnav {
+namespace {
+
+bool sameSegments(const std::vector<GatewaySegment>& a, const std::vector<GatewaySegment>& b) {
+  return std::equal(a.begin(), a.end(), b.begin(), b.end(),
+                    [](const GatewaySegment& u, const GatewaySegment& v) { return u.a == v.a && u.b == v.b; });
+}
+
+}  // namespace
+
+std::vector<GatewaySegment> regionGatewaySegments(const RgMapState& state, const Region& region) {
+  std::vector<GatewaySegment> out;
+  for (GatewayId id : region.gateways) {
+    const Gateway& g = state.gateways.at(id);
+    for (std::size_t side : {kSideA, kSideB})
+      if (g.sides[side].region == region.id)
+        for (const GatewaySegment& s : sideSegments(g, side, region.frame)) out.push_back(s);
+  }
+  return out;
+}
+
+RegionModels::RegionModels(const RegionModelConfig& config) : config_(config) {
+  // Both throw for a bad configuration (ConfigError, InvalidArgumentError), before any region needs them.
+  RegionEvidence{config.evidence};
+  RegionLineMap{config.extractor, config.merger};
+}
+
+RegionModels::Model& RegionModels::upToDate(const RgMapState& state, RegionId id) {
+  const auto region = state.regions.find(id);
+  if (region == state.regions.end()) throw NotAvailableError("no region " + std::to_string(id));
+  const Region& r = region->second;
+  const std::vector<GatewaySegment> gateways = regionGatewaySegments(state, r);
+
+  auto it = models_.find(id);
+  const auto keyAt = [&](std::size_t i) { return ScanKey{r.scans[i], state.scans.at(r.scans[i]).corrected}; };
+  bool reusable = it != models_.end() && it->second.frame == r.frame && sameSegments(it->second.gateways, gateways) &&
+                  it->second.scans.size() <= r.scans.size();
+  for (std::size_t i = 0; reusable && i < it->second.scans.size(); ++i) reusable = it->second.scans[i] == keyAt(i);
+  if (!reusable) {
+    if (it != models_.end()) models_.erase(it);
+    it = models_
+             .emplace(id, Model{r.frame,
+                                gateways,
+                                {},
+                                RegionLineMap(config_.extractor, config_.merger),
+                                RegionEvidence(config_.evidence),
+                                std::nullopt})
+             .first;
+  }
+  Model& m = it->second;
+  try {
+    for (std::size_t i = m.scans.size(); i < r.scans.size(); ++i) {
+      const ScanKey key = keyAt(i);
+      const Pose2D inRegion = between(r.frame, key.corrected);
+      const LaserScan& scan = state.scans.at(key.id).scan;
+      m.evidence.addScan(scan, inRegion, m.gateways);  // the only step that can reject the scan
+      m.lines.addScan(scan, inRegion);
+      m.scans.push_back(key);
+      m.description.reset();
+    }
+  } catch (...) {
+    models_.erase(id);  // half-extended: the next request starts over
+    throw;
+  }
+  return m;
+}
+
+const RegionLineMap& RegionModels::lineMap(const RgMapState& state, RegionId id) { return upToDate(state, id).lines; }
+
+const RegionDescription& RegionModels::description(const RgMapState& state, RegionId id) {
+  Model& m = upToDate(state, id);
+  if (!m.description) m.description = describeRegion(m.evidence, m.lines.lines(), m.gateways, config_.description);
+  return *m.description;
+}
+
+void RegionModels::prune(const RgMapState& state) {
+  std::erase_if(models_, [&](const auto& entry) { return !state.regions.contains(entry.first); });
+}
+
+}  // namespace rgnav

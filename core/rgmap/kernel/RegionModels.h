@@ -1,0 +1,70 @@
+// RegionModels: the metric description M and the properties P of each region (thesis 2.1.1,
+// 5.2): its 2D line segment map (RegionLineMap) and its RegionDescription, in the region's own
+// frame, computed from the region's aligned scans and its gateway lines (GatewayGeometry.h).
+// Both are pure functions of the map state (the region's scans in ID order with their corrected
+// poses, its frame, its gateway lines), so they are not part of a checkpoint: a resumed kernel
+// computes the very same ones. They are computed on demand and cached; a cached model remembers
+// its inputs and is reused when they are unchanged, extended scan by scan when the region only
+// gained scans (the current region while the robot is in it), and rebuilt otherwise (merged or
+// split regions, revised poses, moved gateways). So nobody has to tell the cache what changed.
+// Memory: the line map and the description evidence (freespace counts, hull, a bounded sample of
+// measurements) of every region that was asked for.
+#pragma once
+
+#include <map>
+#include <optional>
+#include <vector>
+
+#include "core/lines/RegionLineMap.h"
+#include "core/rgmap/describe/RegionDescription.h"
+#include "core/rgmap/describe/RegionEvidence.h"
+#include "core/rgmap/kernel/RgMapState.h"
+
+namespace rgnav {
+
+struct RegionModelConfig {
+  LineExtractorParams extractor;
+  LineMergerParams merger;
+  RegionEvidenceConfig evidence;
+  DescriptionParams description;
+};
+
+// The gateway lines of `region` in its own frame: every side of its gateways that lies in it,
+// by gateway ID and side.
+std::vector<GatewaySegment> regionGatewaySegments(const RgMapState& state, const Region& region);
+
+class RegionModels {
+ public:
+  explicit RegionModels(const RegionModelConfig& config = {});
+
+  // The line map / description of region `id` of `state`. Throws NotAvailableError for an unknown
+  // region, InvalidArgumentError if the region's scans do not fit into a description (a region
+  // wider than the freespace grid's maximum extent). References stay valid until the next call.
+  const RegionLineMap& lineMap(const RgMapState& state, RegionId id);
+  const RegionDescription& description(const RgMapState& state, RegionId id);
+
+  // Drops the models of regions that are no longer in `state`.
+  void prune(const RgMapState& state);
+
+ private:
+  struct ScanKey {
+    DataId id = 0;
+    Pose2D corrected;
+    friend bool operator==(const ScanKey&, const ScanKey&) = default;
+  };
+  struct Model {
+    Pose2D frame;
+    std::vector<GatewaySegment> gateways;
+    std::vector<ScanKey> scans;  // the scans in `lines` and `evidence`, in order
+    RegionLineMap lines;
+    RegionEvidence evidence;
+    std::optional<RegionDescription> description;  // of all of the above
+  };
+
+  Model& upToDate(const RgMapState& state, RegionId id);
+
+  RegionModelConfig config_;
+  std::map<RegionId, Model> models_;
+};
+
+}  // namespace rgnav

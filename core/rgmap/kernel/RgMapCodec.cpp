@@ -1,0 +1,217 @@
+// JSON checkpoints of the RG Mapping Kernel; see RgMapCodec.h.
+#include "core/rgmap/kernel/RgMapCodec.h"
+
+#include <charconv>
+#include <cmath>
+#include <nlohmann/json.hpp>
+
+#include "core/common/Errors.h"
+#include "core/common/JsonForms.h"
+#include "core/gateways/detection/GatewayRecordJson.h"
+#include "core/rgmap/kernel/RgMapConsistency.h"
+#include "core/rgmap/kernel/RgMapGraph.h"
+
+namespace rgnav {
+namespace {
+
+using nlohmann::json;
+
+constexpr const char* kFormat = "rgnav-rg-map";
+constexpr int kVersion = 1;
+
+[[noreturn]] void damaged(const std::string& what) { throw FormatError("<checkpoint>", 0, what); }
+
+// A finite float as the double of its shortest decimal form, when that reads back to the float.
+json range(float v) {
+  if (!std::isfinite(v)) return jsonNumber(v);
+  char text[32];
+  const auto written = std::to_chars(text, text + sizeof text, v);
+  double shortest = 0.0;
+  std::from_chars(text, written.ptr, shortest);
+  return static_cast<float>(shortest) == v ? shortest : static_cast<double>(v);
+}
+
+template <class T, class F>
+json list(const T& items, F&& write) {
+  json out = json::array();
+  for (const auto& item : items) out.push_back(write(item));
+  return out;
+}
+
+json gateway(const Gateway& g) {
+  const json sides = list(g.sides, [](const GatewaySideRef& s) {
+    return json{{"region", s.region},
+                {"crossing", s.crossing == kNoCrossing ? json() : json(s.crossing)},
+                {"attachedAt", s.attachedAt}};
+  });
+  return {{"id", g.id},     {"record", jsonGatewayRecord(g.record)},         {"odomToMap", jsonPose(g.odomToMap)},
+          {"sides", sides}, {"traversalsFrom", g.traversalsFrom}, {"neutralised", g.neutralised}};
+}
+Gateway gateway(const json& j) {
+  Gateway g;
+  g.id = j.at("id");
+  g.record = gatewayRecordFrom(j.at("record"));
+  g.odomToMap = poseFrom(j.at("odomToMap"));
+  const json& sides = j.at("sides");
+  if (sides.size() != 2) damaged("gateway " + std::to_string(g.id) + ": want two sides");
+  for (std::size_t i = 0; i < 2; ++i) {
+    const json& s = sides.at(i);
+    g.sides[i] = {s.at("region").get<RegionId>(),
+                  s.at("crossing").is_null() ? kNoCrossing : s.at("crossing").get<std::size_t>(),
+                  s.at("attachedAt").get<DataId>()};
+  }
+  g.traversalsFrom = j.at("traversalsFrom").get<std::array<std::size_t, 2>>();
+  g.neutralised = j.at("neutralised").get<bool>();
+  return g;
+}
+
+json region(const Region& r) {
+  return {{"id", r.id},     {"frame", jsonPose(r.frame)},  {"scans", r.scans}, {"gateways", r.gateways},
+          {"name", r.name}, {"finalised", r.finalised}};
+}
+Region region(const json& j) {
+  return {j.at("id").get<RegionId>(),
+          poseFrom(j.at("frame")),
+          j.at("scans").get<std::vector<DataId>>(),
+          j.at("gateways").get<std::set<GatewayId>>(),
+          j.at("name").get<std::string>(),
+          j.at("finalised").get<bool>()};
+}
+
+json scan(const StoredScan& s) {
+  const LaserScan& l = s.scan;
+  return {{"id", l.id},
+          {"stamp", jsonNumber(l.stamp)},
+          {"odometry", jsonPose(l.odometry)},
+          {"sensorPose", jsonPose(l.sensorPose)},
+          {"startAngle", jsonNumber(l.startAngle)},
+          {"increment", jsonNumber(l.angleIncrement)},
+          {"maxRange", jsonNumber(l.maxRange)},
+          {"ranges", list(l.ranges, [](float r) { return range(r); })},
+          {"corrected", jsonPose(s.corrected)}};
+}
+StoredScan scan(const json& j) {
+  StoredScan s;
+  LaserScan& l = s.scan;
+  l.id = j.at("id").get<DataId>();
+  l.stamp = numberFrom(j.at("stamp"));
+  l.odometry = poseFrom(j.at("odometry"));
+  l.sensorPose = poseFrom(j.at("sensorPose"));
+  l.startAngle = numberFrom(j.at("startAngle"));
+  l.angleIncrement = numberFrom(j.at("increment"));
+  l.maxRange = numberFrom(j.at("maxRange"));
+  for (const json& r : j.at("ranges")) l.ranges.push_back(static_cast<float>(numberFrom(r)));
+  s.corrected = poseFrom(j.at("corrected"));
+  return s;
+}
+
+json event(const RgMapEvent& e) {
+  return {{"id", e.id},       {"kind", eventKindName(e.kind)}, {"region", e.region},
+          {"other", e.other}, {"gateway", e.gateway},          {"scan", e.scanId}};
+}
+RgMapEvent event(const json& j) {
+  const std::string name = j.at("kind");
+  const std::optional<RgMapEventKind> kind = parseEventKind(name);
+  if (!kind) damaged("event kind " + name);
+  return {j.at("id").get<RgMapEventId>(),   *kind,
+          j.at("region").get<RegionId>(),   j.at("other").get<RegionId>(),
+          j.at("gateway").get<GatewayId>(), j.at("scan").get<DataId>()};
+}
+
+json node(const NodeKey& k) { return json::array({k.gateway, k.side == GatewaySide::A ? "A" : "B"}); }
+NodeKey node(const json& j) {
+  const std::string side = j.at(1);
+  if (side != "A" && side != "B") damaged("gateway side " + side);
+  return {j.at(0).get<GatewayId>(), side == "A" ? GatewaySide::A : GatewaySide::B};
+}
+
+json costs(const RgMapState& s) {
+  json traversals = json::array();
+  for (const auto& [edge, stats] : s.edgeTraversals)
+    traversals.push_back({{"kind", edge.kind == EdgeKind::Gateway ? "gateway" : "region"},
+                          {"a", node(edge.a)},
+                          {"b", node(edge.b)},
+                          {"mean", jsonNumber(stats.meanM)},
+                          {"count", stats.count}});
+  json doors = json::array();
+  for (const auto& [g, offset] : s.doorOffsets) doors.push_back(json::array({g, jsonNumber(offset)}));
+  return {{"traversals", traversals}, {"doorOffsets", doors}};
+}
+void costs(const json& j, RgMapState& s) {
+  for (const json& t : j.at("traversals")) {
+    const std::string kind = t.at("kind");
+    if (kind != "gateway" && kind != "region") damaged("edge kind " + kind);
+    const EdgeKey key =
+        edgeKey(kind == "gateway" ? EdgeKind::Gateway : EdgeKind::Region, node(t.at("a")), node(t.at("b")));
+    s.edgeTraversals[key] = {numberFrom(t.at("mean")), t.at("count").get<std::size_t>()};
+  }
+  for (const json& d : j.at("doorOffsets")) s.doorOffsets[d.at(0).get<GatewayId>()] = numberFrom(d.at(1));
+}
+
+// Reads the items of `j` into `into`, keyed by key(item); a key seen twice is damage.
+template <class Map, class Read, class Key>
+void insertAll(const json& j, Map& into, Read&& read, Key&& key, const char* what) {
+  for (const json& item : j) {
+    auto value = read(item);
+    const auto k = key(value);
+    if (!into.emplace(k, std::move(value)).second) damaged(std::string("duplicate ") + what + " " + std::to_string(k));
+  }
+}
+
+}  // namespace
+
+std::string serializeRgMap(const RgMapState& s) {
+  const json j = {{"format", kFormat},
+                  {"version", kVersion},
+                  {"current", s.current},
+                  {"visitStart", s.visitStart},
+                  {"nextRegionId", s.nextRegionId},
+                  {"nextGatewayId", s.nextGatewayId},
+                  {"lastScanId", s.lastScanId},
+                  {"lastGatewayEventId", s.lastGatewayEventId},
+                  {"regions", list(s.regions, [](const auto& r) { return region(r.second); })},
+                  {"gateways", list(s.gateways, [](const auto& g) { return gateway(g.second); })},
+                  {"scans", list(s.scans, [](const auto& sc) { return scan(sc.second); })},
+                  {"events", list(s.events, [](const RgMapEvent& e) { return event(e); })},
+                  {"costs", costs(s)}};
+  return j.dump();
+}
+
+RgMapState deserializeRgMap(const std::string& text) {
+  RgMapState s;
+  try {
+    const json j = json::parse(text);
+    if (j.at("format") != kFormat) damaged("not an RG map checkpoint");
+    if (j.at("version") != kVersion)
+      damaged("version " + j.at("version").dump() + ", this program reads " + std::to_string(kVersion));
+    s.current = j.at("current");
+    s.visitStart = j.at("visitStart");
+    s.nextRegionId = j.at("nextRegionId");
+    s.nextGatewayId = j.at("nextGatewayId");
+    s.lastScanId = j.at("lastScanId");
+    s.lastGatewayEventId = j.at("lastGatewayEventId");
+    insertAll(
+        j.at("regions"), s.regions, [](const json& r) { return region(r); }, [](const Region& r) { return r.id; },
+        "region");
+    insertAll(
+        j.at("gateways"), s.gateways, [](const json& g) { return gateway(g); }, [](const Gateway& g) { return g.id; },
+        "gateway");
+    insertAll(
+        j.at("scans"), s.scans, [](const json& sc) { return scan(sc); },
+        [](const StoredScan& sc) { return sc.scan.id; }, "scan");
+    for (const json& e : j.at("events")) s.events.push_back(event(e));
+    costs(j.at("costs"), s);
+  } catch (const json::exception& e) {
+    damaged(e.what());
+  }
+  const std::vector<std::string> violations = checkConsistency(s);
+  if (!violations.empty()) damaged("inconsistent RG map: " + violations.front());
+  try {
+    costTable(s, {});
+  } catch (const InvalidArgumentError& e) {
+    damaged(e.what());
+  }
+  return s;
+}
+
+}  // namespace rgnav

@@ -1,0 +1,192 @@
+// Tests the RG Mapping Kernel's checkpoints and its global consistency check: a kernel resumed
+// from a checkpoint taken anywhere in a tour ends with exactly the bytes of one that never
+// stopped (and the same descriptions); laser ranges of every kind survive the trip; damaged or
+// inconsistent checkpoints are format errors; deliberately broken states are reported by
+// checkConsistency, one message per violation.
+#include "core/rgmap/kernel/RgMapCodec.h"
+
+#include <cppunit/extensions/HelperMacros.h>
+
+#include <cmath>
+#include <limits>
+
+#include "core/common/Errors.h"
+#include "core/rgmap/kernel/RgMapConsistency.h"
+#include "core/rgmap/kernel/testing/SyntheticTour.h"
+
+using namespace rgnav;
+using rgnav::testing::feedChecked;
+using rgnav::testing::KernelInput;
+using rgnav::testing::mapped;
+
+namespace {
+
+bool mentions(const std::vector<std::string>& violations, const std::string& what) {
+  for (const std::string& v : violations)
+    if (v.find(what) != std::string::npos) return true;
+  return false;
+}
+
+void expectFormatError(const std::string& text) { CPPUNIT_ASSERT_THROW(deserializeRgMap(text), FormatError); }
+
+// `text` with the first occurrence of `from` replaced by `to`.
+std::string replaced(std::string text, const std::string& from, const std::string& to) {
+  const std::size_t at = text.find(from);
+  CPPUNIT_ASSERT(at != std::string::npos);
+  return text.replace(at, from.size(), to);
+}
+
+}  // namespace
+
+class RgMapCodecTest : public CppUnit::TestFixture {
+  CPPUNIT_TEST_SUITE(RgMapCodecTest);
+  CPPUNIT_TEST(resumedKernelEndsIdentically);
+  CPPUNIT_TEST(resumedRingClosesTheSameLoop);
+  CPPUNIT_TEST(rangesOfEveryKindSurvive);
+  CPPUNIT_TEST(damagedCheckpointsAreFormatErrors);
+  CPPUNIT_TEST(brokenStatesAreReported);
+  CPPUNIT_TEST_SUITE_END();
+
+ public:
+  void resumedKernelEndsIdentically() {
+    const std::vector<KernelInput> inputs = rgnav::testing::twoRoomTour().inputs();
+    const RgMappingKernel straight = mapped(inputs, inputs.size());
+    const std::string expected = serializeRgMap(straight.state());
+    for (std::size_t stop : {std::size_t(1), inputs.size() / 3, inputs.size() / 2, inputs.size() - 1}) {
+      const RgMappingKernel first = mapped(inputs, stop);
+      RgMappingKernel resumed({}, deserializeRgMap(serializeRgMap(first.state())));
+      CPPUNIT_ASSERT_EQUAL(first.state().lastScanId, resumed.state().lastScanId);
+      CPPUNIT_ASSERT_EQUAL(first.state().lastGatewayEventId, resumed.state().lastGatewayEventId);
+      CPPUNIT_ASSERT_EQUAL(std::string(), feedChecked(resumed, inputs, stop, inputs.size()));
+      CPPUNIT_ASSERT_EQUAL_MESSAGE("stopped after input " + std::to_string(stop), expected,
+                                   serializeRgMap(resumed.state()));
+      for (const auto& [id, region] : straight.state().regions) {
+        const RegionDescription& a = straight.description(id);
+        const RegionDescription& b = resumed.description(id);
+        CPPUNIT_ASSERT(a.freespace.bytes == b.freespace.bytes);
+        CPPUNIT_ASSERT(a.boundingBox.isApprox(b.boundingBox, 0.0));
+        CPPUNIT_ASSERT_EQUAL(straight.lineMap(id).lineCount(), resumed.lineMap(id).lineCount());
+      }
+    }
+  }
+
+  void resumedRingClosesTheSameLoop() {
+    const std::vector<KernelInput> inputs = rgnav::testing::ringTour().inputs();
+    const RgMappingKernel straight = mapped(inputs, inputs.size());
+    RgMappingKernel first = mapped(inputs, inputs.size() / 2);
+    first.nameRegion(2, "east corridor");
+    RgMappingKernel resumed({}, deserializeRgMap(serializeRgMap(first.state())));
+    CPPUNIT_ASSERT_EQUAL(std::string(), feedChecked(resumed, inputs, inputs.size() / 2, inputs.size()));
+    CPPUNIT_ASSERT_EQUAL(RegionId(1), *resumed.regionByName("east corridor"));  // merged: the name stays
+    CPPUNIT_ASSERT(resumed.state().gateways.at(1).neutralised);
+    // The structure of a run without the stop.
+    CPPUNIT_ASSERT(straight.state().gateways == resumed.state().gateways);
+    CPPUNIT_ASSERT(straight.state().regions.at(1).scans == resumed.state().regions.at(1).scans);
+  }
+
+  void rangesOfEveryKindSurvive() {
+    RgMapState s;
+    LaserScan scan;
+    scan.id = 1;
+    scan.stamp = 1234.5678901234;
+    scan.angleIncrement = M_PI / 360;
+    scan.maxRange = 30.0;
+    scan.ranges = {0.1f,
+                   1.2345678f,
+                   3.0e-7f,
+                   29.999998f,
+                   std::numeric_limits<float>::max(),
+                   LaserScan::kNoReturn,
+                   -LaserScan::kNoReturn,
+                   LaserScan::kInvalid,
+                   std::numeric_limits<float>::denorm_min(),
+                   0.0f};
+    s.scans.emplace(1, StoredScan{scan, {1, 2, 3}});
+    s.regions.emplace(1, Region{1, {}, {1}, {}, {}, false});
+    s.current = 1;
+    s.nextRegionId = 2;
+    s.lastScanId = 1;
+    const std::string text = serializeRgMap(s);
+    const RgMapState back = deserializeRgMap(text);
+    const std::vector<float>& r = back.scans.at(1).scan.ranges;
+    CPPUNIT_ASSERT_EQUAL(scan.ranges.size(), r.size());
+    for (std::size_t i = 0; i < r.size(); ++i)
+      CPPUNIT_ASSERT(std::isnan(scan.ranges[i]) ? std::isnan(r[i]) : r[i] == scan.ranges[i]);
+    CPPUNIT_ASSERT(text.find("1.2345678,") != std::string::npos);  // the float's shortest form
+    CPPUNIT_ASSERT_EQUAL(text, serializeRgMap(back));
+  }
+
+  void damagedCheckpointsAreFormatErrors() {
+    const std::vector<KernelInput> inputs = rgnav::testing::twoRoomTour().inputs();
+    const std::string good = serializeRgMap(mapped(inputs, inputs.size()).state());
+    CPPUNIT_ASSERT_NO_THROW(deserializeRgMap(good));
+    expectFormatError(good.substr(0, good.size() / 2));
+    expectFormatError("");
+    expectFormatError("[1, 2, 3]");
+    expectFormatError(replaced(good, "\"version\":1", "\"version\":2"));
+    expectFormatError(replaced(good, "\"rgnav-rg-map\"", "\"rgnav-gateway-detection\""));
+    expectFormatError(replaced(good, "\"RegionCreated\"", "\"RegionBorn\""));
+    expectFormatError(replaced(good, "\"kind\":\"NarrowPassage\"", "\"kind\":\"Staircase\""));
+    expectFormatError(replaced(good, "\"neutralised\":false", "\"neutralised\":true"));  // inconsistent
+    expectFormatError(replaced(good, "\"gateways\":[1,2]", "\"gateways\":[1]"));         // one reference lost
+    try {
+      deserializeRgMap(replaced(good, "\"gateways\":[1,2]", "\"gateways\":[1]"));
+    } catch (const FormatError& e) {
+      CPPUNIT_ASSERT(std::string(e.what()).find("gateway 2") != std::string::npos);
+    }
+  }
+
+  void brokenStatesAreReported() {
+    const std::vector<KernelInput> inputs = rgnav::testing::twoRoomTour().inputs();
+    const RgMappingKernel k = mapped(inputs, inputs.size());
+    CPPUNIT_ASSERT(k.checkConsistency().empty());
+    const RgMapState good = k.state();
+
+    RgMapState s = good;
+    s.regions.at(2).gateways.erase(1);  // room 1 forgets its door
+    CPPUNIT_ASSERT(mentions(checkConsistency(s), "gateway 1 side B names region 2, which does not list it"));
+
+    s = good;
+    s.regions.at(3).gateways.insert(1);  // room 2 claims room 1's door
+    CPPUNIT_ASSERT(mentions(checkConsistency(s), "region 3 lists gateway 1, which does not name it"));
+
+    s = good;
+    s.gateways.at(2).neutralised = true;
+    CPPUNIT_ASSERT(mentions(checkConsistency(s), "gateway 2: neutralised but joins two sides"));
+
+    s = good;
+    s.gateways.at(2).sides[kSideB].region = 1;  // both sides the hallway, not flagged (and room 2 still lists it)
+    const std::vector<std::string> violations = checkConsistency(s);
+    CPPUNIT_ASSERT(mentions(violations, "gateway 2: the same region on both sides but not neutralised"));
+    CPPUNIT_ASSERT(mentions(violations, "region 3 lists gateway 2, which does not name it"));
+
+    s = good;
+    s.regions.at(2).scans.push_back(s.regions.at(1).scans.back() + 100000);                      // a scan never stored
+    s.regions.at(3).scans.insert(s.regions.at(3).scans.begin(), s.regions.at(1).scans.front());  // in two regions
+    const std::vector<std::string> scans = checkConsistency(s);
+    CPPUNIT_ASSERT(mentions(scans, "is not stored"));
+    CPPUNIT_ASSERT(mentions(scans, "lies in 2 regions"));
+
+    s = good;
+    s.regions.at(3).scans.clear();  // an empty region the robot is not in
+    s.scans.clear();
+    s.regions.at(1).scans.clear();
+    s.regions.at(2).scans.clear();
+    const std::vector<std::string> empty = checkConsistency(s);
+    CPPUNIT_ASSERT(mentions(empty, "region 3: empty"));
+    CPPUNIT_ASSERT(!mentions(empty, "region 1: empty"));  // the current one may be
+
+    s = good;
+    s.regions.at(3).name = s.regions.at(2).name = "office";
+    s.current = 42;
+    s.events[3].id = 99;
+    const std::vector<std::string> rest = checkConsistency(s);
+    CPPUNIT_ASSERT(mentions(rest, "name \"office\" is taken by region 2"));
+    CPPUNIT_ASSERT(mentions(rest, "the current region 42 does not exist"));
+    CPPUNIT_ASSERT(mentions(rest, "event 99 out of sequence"));
+
+    CPPUNIT_ASSERT_THROW(RgMappingKernel({}, s), InvalidArgumentError);
+  }
+};
+
+CPPUNIT_TEST_SUITE_REGISTRATION(RgMapCodecTest);

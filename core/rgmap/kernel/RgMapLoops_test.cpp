@@ -1,0 +1,163 @@
+// Tests the RG Mapping Kernel's structural consistency rules (thesis 6.1.1): around a ring
+// corridor with one door (figure 6.1) the door seen again from the side of the first region
+// closes the loop, the two regions are merged and the door, with the same region on both sides
+// now, is neutralised; traversing it again changes nothing. A door missed on the way into a room
+// (figure 6.4) is repaired when it is later observed from inside the room, or only reported when
+// the robot leaves through it: the hallway's region is split where the path crossed the door.
+// Gateway hypotheses that turn out to be no transition are dropped. Consistency holds after
+// every input.
+#include <cppunit/extensions/HelperMacros.h>
+
+#include <algorithm>
+
+#include "core/rgmap/kernel/RgMappingKernel.h"
+#include "core/rgmap/kernel/testing/SyntheticTour.h"
+
+using namespace rgnav;
+using rgnav::testing::DoorReports;
+using rgnav::testing::feedChecked;
+using rgnav::testing::KernelInput;
+using rgnav::testing::SyntheticTour;
+
+namespace {
+
+void feedAll(RgMappingKernel& k, const std::vector<KernelInput>& inputs, std::size_t begin, std::size_t end) {
+  CPPUNIT_ASSERT_EQUAL(std::string(), feedChecked(k, inputs, begin, end));
+}
+
+// The index of the first input after `from` that is a gateway event of `kind`.
+std::size_t nextEvent(const std::vector<KernelInput>& inputs, std::size_t from, GatewayEventKind kind) {
+  for (std::size_t i = from; i < inputs.size(); ++i)
+    if (inputs[i].event && inputs[i].event->kind == kind) return i;
+  CPPUNIT_FAIL("no such event");
+  return inputs.size();
+}
+
+bool happened(const RgMappingKernel& k, RgMapEventKind kind) {
+  return std::any_of(k.state().events.begin(), k.state().events.end(),
+                     [&](const RgMapEvent& e) { return e.kind == kind; });
+}
+
+// Into room 1 of hallwayWithTwoRooms() and around in it, door 11 unseen, then (after
+// `whileInside` was applied to the tour) back out to the hallway.
+SyntheticTour missedDoorTour(DoorReports whileInside) {
+  SyntheticTour tour(rgnav::testing::hallwayWithTwoRooms(), rgnav::testing::kTourDrift);
+  tour.setReports(11, DoorReports::None);
+  tour.driveThrough({{1, 0.9}, {4, 0.9}, {4, 3.5}, {3, 4.5}, {5, 4.5}, {4, 3.5}});
+  tour.setReports(11, whileInside);
+  tour.driveThrough({{4, 4}, {4, 3.5}, {4, 0.9}, {1, 0.9}});
+  return tour;
+}
+
+// Two regions split by door 11 (detector ID): the hallway's scans in region 1, the room's in region 2.
+void checkRepairedRoom(const RgMappingKernel& k) {
+  const RgMapState& s = k.state();
+  CPPUNIT_ASSERT_EQUAL(std::size_t(2), s.regions.size());
+  CPPUNIT_ASSERT_EQUAL(std::size_t(1), s.gateways.size());
+  const Gateway& door = s.gateways.begin()->second;
+  CPPUNIT_ASSERT_EQUAL(GatewayId(11), door.record.id);
+  CPPUNIT_ASSERT(!door.neutralised);
+  const RegionId room = door.sides[kSideA].region;  // the side it was first seen from: the room
+  CPPUNIT_ASSERT_EQUAL(RegionId(2), room);
+  CPPUNIT_ASSERT_EQUAL(RegionId(1), door.sides[kSideB].region);
+  for (const auto& [id, region] : s.regions)
+    for (DataId scan : region.scans)
+      CPPUNIT_ASSERT_EQUAL_MESSAGE("scan " + std::to_string(scan), s.scans.at(scan).corrected.y > 2.0 ? room : 1, id);
+  CPPUNIT_ASSERT(happened(k, RgMapEventKind::GatewayRepaired));
+  CPPUNIT_ASSERT_EQUAL(RegionId(1), k.currentRegionId());
+}
+
+}  // namespace
+
+class RgMapLoopsTest : public CppUnit::TestFixture {
+  CPPUNIT_TEST_SUITE(RgMapLoopsTest);
+  CPPUNIT_TEST(ringLoopMergesRegionsAndNeutralisesTheDoor);
+  CPPUNIT_TEST(doorMissedOnEntryIsRepairedWhenSeenFromInside);
+  CPPUNIT_TEST(doorMissedOnEntryIsRepairedWhenTraversedOut);
+  CPPUNIT_TEST(noTransitionAfterAllIsDropped);
+  CPPUNIT_TEST_SUITE_END();
+
+ public:
+  void ringLoopMergesRegionsAndNeutralisesTheDoor() {
+    const std::vector<KernelInput> inputs = rgnav::testing::ringTour().inputs();
+    RgMappingKernel k;
+    // Up to the first traversal and around the block: two regions joined by the door.
+    const std::size_t traversal = nextEvent(inputs, 0, GatewayEventKind::Traversed);
+    const std::size_t seenAgain = nextEvent(inputs, traversal, GatewayEventKind::Updated);
+    feedAll(k, inputs, 0, seenAgain);
+    CPPUNIT_ASSERT_EQUAL(std::size_t(2), k.state().regions.size());
+    CPPUNIT_ASSERT_EQUAL(RegionId(2), k.currentRegionId());
+    const Gateway& before = k.state().gateways.at(1);
+    CPPUNIT_ASSERT(before.sides[kSideA].region == 1 && before.sides[kSideB].region == 2 && !before.neutralised);
+
+    // The door seen again from its west side, which lies in region 1: the robot is in region 1.
+    feedAll(k, inputs, seenAgain, seenAgain + 1);
+    const RgMapState& s = k.state();
+    CPPUNIT_ASSERT_EQUAL(std::size_t(1), s.regions.size());
+    CPPUNIT_ASSERT_EQUAL(RegionId(1), k.currentRegionId());
+    const Gateway& door = s.gateways.at(1);
+    CPPUNIT_ASSERT(door.neutralised);
+    CPPUNIT_ASSERT(door.sides[kSideA].region == 1 && door.sides[kSideB].region == 1);
+    const auto merged = std::find_if(s.events.begin(), s.events.end(),
+                                     [](const RgMapEvent& e) { return e.kind == RgMapEventKind::RegionsMerged; });
+    CPPUNIT_ASSERT(merged != s.events.end() && merged->region == 1 && merged->other == 2);
+    CPPUNIT_ASSERT(std::next(merged) != s.events.end() &&
+                   std::next(merged)->kind == RgMapEventKind::GatewayNeutralised);
+    CPPUNIT_ASSERT_EQUAL(s.scans.size(), s.regions.at(1).scans.size());
+
+    // Through the door again: nothing changes but the traversal count.
+    feedAll(k, inputs, seenAgain + 1, inputs.size());
+    CPPUNIT_ASSERT_EQUAL(std::size_t(1), k.state().regions.size());
+    CPPUNIT_ASSERT_EQUAL(std::size_t(2), k.state().gateways.at(1).traversalsFrom[kSideA]);
+    CPPUNIT_ASSERT_EQUAL(RgMapEventKind::GatewayTraversed, k.state().events.back().kind);
+    CPPUNIT_ASSERT_EQUAL(k.state().events.back().region, k.state().events.back().other);
+    // The neutralised door stays in the RG Graph, inside the one region.
+    const RgGraph graph = k.graph();
+    CPPUNIT_ASSERT_EQUAL(std::size_t(2), graph.nodes().size());
+    CPPUNIT_ASSERT(graph.nodes()[0].region == 1 && graph.nodes()[1].region == 1);
+  }
+
+  void doorMissedOnEntryIsRepairedWhenSeenFromInside() {
+    const std::vector<KernelInput> inputs = missedDoorTour(DoorReports::All).inputs();
+    RgMappingKernel k;
+    const std::size_t detected = nextEvent(inputs, 0, GatewayEventKind::Detected);
+    feedAll(k, inputs, 0, detected);
+    CPPUNIT_ASSERT_EQUAL(std::size_t(1), k.state().regions.size());  // the room is still "hallway"
+    feedAll(k, inputs, detected, detected + 1);
+    CPPUNIT_ASSERT_EQUAL(std::size_t(2), k.state().regions.size());
+    CPPUNIT_ASSERT_EQUAL(RegionId(2), k.currentRegionId());
+    feedAll(k, inputs, detected + 1, inputs.size());
+    checkRepairedRoom(k);
+  }
+
+  void doorMissedOnEntryIsRepairedWhenTraversedOut() {
+    const std::vector<KernelInput> inputs = missedDoorTour(DoorReports::TraversalsOnly).inputs();
+    CPPUNIT_ASSERT_EQUAL(
+        std::size_t(1), static_cast<std::size_t>(std::count_if(
+                            inputs.begin(), inputs.end(), [](const KernelInput& in) { return in.event.has_value(); })));
+    RgMappingKernel k;
+    feedAll(k, inputs, 0, inputs.size());
+    checkRepairedRoom(k);
+    CPPUNIT_ASSERT_EQUAL(std::size_t(1), k.state().gateways.begin()->second.traversalsFrom[kSideA]);
+  }
+
+  void noTransitionAfterAllIsDropped() {
+    const std::vector<KernelInput> inputs = rgnav::testing::ringTour().inputs();
+    RgMappingKernel k;
+    const std::size_t detected = nextEvent(inputs, 0, GatewayEventKind::Detected);
+    feedAll(k, inputs, 0, detected + 1);
+    CPPUNIT_ASSERT_EQUAL(std::size_t(1), k.state().gateways.size());
+    // The detector changes its mind before the robot gets there: a dead end, not a gateway.
+    GatewayEvent update = *inputs[detected].event;
+    update.id += 1000;
+    update.kind = GatewayEventKind::Updated;
+    update.gateway.classes = {{"Deadend", 0.9}, {kNarrowPassageClass, 0.1}};
+    k.addGatewayEvent(update, inputs[detected].lastScanCorrected);
+    CPPUNIT_ASSERT(k.state().gateways.empty());
+    CPPUNIT_ASSERT(k.state().regions.at(1).gateways.empty());
+    CPPUNIT_ASSERT_EQUAL(RgMapEventKind::GatewayDropped, k.state().events.back().kind);
+    CPPUNIT_ASSERT(k.checkConsistency().empty());
+  }
+};
+
+CPPUNIT_TEST_SUITE_REGISTRATION(RgMapLoopsTest);

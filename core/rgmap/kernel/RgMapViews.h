@@ -1,0 +1,117 @@
+// RgMapViews: what the RG Mapping Kernel module serves about its map (RGMappingKernel.idl), as
+// plain values taken from the kernel: region summaries, a region with its line map and
+// description (thesis table 2.1), gateways placed in the map frame, the RG graph and a path on
+// it, the map's counts. The client library converts these to and from IDL types.
+#pragma once
+
+#include <Eigen/Geometry>
+#include <string>
+#include <vector>
+
+#include "core/rgmap/describe/FreespaceBitmap.h"
+#include "core/rgmap/describe/MainDirections.h"
+#include "core/rgmap/graph/RgPathSearch.h"
+#include "core/rgmap/kernel/RgMappingKernel.h"
+
+namespace rgnav {
+
+struct RegionSummaryView {
+  RegionId id = 0;
+  std::string name;
+  Pose2D frame;
+  std::size_t scans = 0;
+  bool finalised = false;
+  std::vector<GatewayId> gateways;
+
+  friend bool operator==(const RegionSummaryView&, const RegionSummaryView&) = default;
+};
+
+struct Segment2 {
+  Eigen::Vector2d a = Eigen::Vector2d::Zero(), b = Eigen::Vector2d::Zero();
+
+  friend bool operator==(const Segment2&, const Segment2&) = default;
+};
+
+// Everything in the region frame.
+struct RegionView {
+  RegionSummaryView summary;
+  std::vector<Segment2> lines;
+  Eigen::Vector2d boxMin = Eigen::Vector2d::Zero(), boxMax = Eigen::Vector2d::Zero();
+  FreespaceBitmap freespace;
+  double areaM2 = 0.0;
+  Eigen::Vector2d centroid = Eigen::Vector2d::Zero();
+  double majorAxisAngleRad = 0.0, majorVariance = 0.0, minorVariance = 0.0;
+  std::vector<MainDirection> mainDirections;
+  double accuracyInlierShare = 0.0, accuracyRmsM = 0.0, completeness = 0.0;
+};
+
+// In the map frame.
+struct GatewayView {
+  GatewayId id = 0;
+  DetectorGatewayId detectorId = 0;
+  std::vector<ClassProbability> classes;
+  bool door = false;
+  bool neutralised = false;
+  std::vector<Eigen::Vector2d> gatewayPoints, crossingPoints;
+  RegionId sideA = 0, sideB = 0;
+  std::size_t traversals = 0;
+
+  friend bool operator==(const GatewayView&, const GatewayView&) = default;
+};
+
+struct GraphNodeView {
+  GatewayId gateway = 0;
+  std::size_t side = 0;  // 0 = A, 1 = B
+  RegionId region = 0;
+  Eigen::Vector2d position = Eigen::Vector2d::Zero();
+
+  friend bool operator==(const GraphNodeView&, const GraphNodeView&) = default;
+};
+
+struct GraphEdgeView {
+  std::size_t from = 0, to = 0;
+  bool throughGateway = false;
+  std::uint64_t through = 0;
+  double lengthM = 0.0, costM = 0.0;
+
+  friend bool operator==(const GraphEdgeView&, const GraphEdgeView&) = default;
+};
+
+struct GraphView {
+  std::vector<GraphNodeView> nodes;
+  std::vector<GraphEdgeView> edges;
+};
+
+struct PathView {
+  std::vector<GraphNodeView> crossings;
+  double costM = 0.0, lengthM = 0.0;
+};
+
+struct MapSummaryView {
+  std::size_t regions = 0, gateways = 0, neutralised = 0;
+  DataId lastScan = 0;
+  RgMapEventId lastEvent = 0;
+  RegionId current = 0;
+  bool endOfData = false;
+
+  friend bool operator==(const MapSummaryView&, const MapSummaryView&) = default;
+};
+
+struct RgMapEventBatch {
+  std::vector<RgMapEvent> events;
+  RgMapEventId latestId = 0;
+  DataId lastScan = 0;
+  bool endOfData = false;
+};
+
+RegionSummaryView summaryOf(const Region& region);
+// Throws NotAvailableError for an unknown region.
+RegionView regionView(const RgMappingKernel& kernel, RegionId region);
+std::vector<GatewayView> gatewayViews(const RgMappingKernel& kernel);
+GraphNodeView nodeView(const RgNode& node);
+GraphView graphView(const RgGraph& graph);
+PathView pathView(const RgPath& path);
+// endOfData is the caller's to set.
+MapSummaryView mapSummary(const RgMappingKernel& kernel);
+
+}  // namespace rgnav

@@ -1,0 +1,307 @@
+// The RG Mapping Kernel's rules; see RgMappingKernel.h.
+#include "core/rgmap/kernel/RgMappingKernel.h"
+
+#include <cmath>
+#include <limits>
+#include <map>
+
+#include "core/common/Errors.h"
+#include "core/lines/ScanPoints.h"
+#include "core/rgmap/kernel/KernelInputs.h"
+#include "core/rgmap/kernel/RgMapConsistency.h"
+#include "core/rgmap/kernel/RgMapEdits.h"
+#include "core/rgmap/kernel/RgMapGraph.h"
+
+namespace rgnav {
+namespace {
+
+using K = RgMapEventKind;
+
+constexpr DataId kNoScanLimit = std::numeric_limits<DataId>::max();
+
+std::size_t otherSide(std::size_t side) { return side == kSideA ? kSideB : kSideA; }
+
+// The robot pose where it crossed the gateway (map frame): at the traversal point, heading across.
+Pose2D crossingPose(const TraversalReport& t, const Pose2D& odomToMap) {
+  const Eigen::Vector2d at = transformPoint(odomToMap, t.at);
+  return {at.x(), at.y(), normalizeAngle(std::atan2(t.direction.y(), t.direction.x()) + odomToMap.theta)};
+}
+
+}  // namespace
+
+RgMappingKernel::RgMappingKernel(const RgMappingKernelConfig& config) : config_(config), models_(config.models) {
+  validate(config.costs);
+}
+
+RgMappingKernel::RgMappingKernel(const RgMappingKernelConfig& config, RgMapState state) : RgMappingKernel(config) {
+  const std::vector<std::string> violations = rgnav::checkConsistency(state);
+  if (!violations.empty()) throw InvalidArgumentError("inconsistent RG map: " + violations.front());
+  costTable(state, config.costs);  // throws for a learned cost the table refuses
+  state_ = std::move(state);
+}
+
+void RgMappingKernel::ensureCurrentRegion(const Pose2D& frame, DataId scan) {
+  if (state_.current != 0) return;
+  state_.current = createRegion(state_, frame, scan);
+  state_.visitStart = 0;
+}
+
+void RgMappingKernel::addScan(const LaserScan& scan, const Pose2D& corrected) {
+  if (scan.id <= state_.lastScanId)
+    throw InvalidArgumentError("scan " + std::to_string(scan.id) + " is not after scan " +
+                               std::to_string(state_.lastScanId));
+  requireFinite(corrected, "scan " + std::to_string(scan.id));
+  ensureCurrentRegion(corrected, scan.id);
+  state_.scans.emplace(scan.id, StoredScan{scan, corrected});
+  state_.regions.at(state_.current).scans.push_back(scan.id);
+  state_.lastScanId = scan.id;
+}
+
+void RgMappingKernel::addGatewayEvent(const GatewayEvent& event, const Pose2D& lastScanCorrected) {
+  const std::string what = "gateway event " + std::to_string(event.id);
+  if (event.id <= state_.lastGatewayEventId)
+    throw InvalidArgumentError(what + " is not after event " + std::to_string(state_.lastGatewayEventId));
+  validateGatewayEvent(event);
+  requireFinite(lastScanCorrected, what);
+  state_.lastGatewayEventId = event.id;
+  const DataId scan = event.kind == GatewayEventKind::Traversed ? event.traversal.scanId : event.gateway.lastScan;
+  ensureCurrentRegion(lastScanCorrected, scan);
+  const Pose2D odomToMap = odometryToMap(event.gateway, lastScanCorrected);
+  if (event.kind == GatewayEventKind::Traversed)
+    traverse(event, odomToMap);
+  else
+    observe(event, odomToMap, lastScanCorrected);
+  models_.prune(state_);
+}
+
+std::optional<GatewayId> RgMappingKernel::findGateway(DetectorGatewayId detectorId) const {
+  for (const auto& [id, g] : state_.gateways)
+    if (g.record.id == detectorId) return id;
+  return std::nullopt;
+}
+
+GatewayId RgMappingKernel::takeIn(const GatewayRecord& record, const Pose2D& odomToMap, bool announceUpdate,
+                                  DataId scan) {
+  const std::optional<GatewayId> known = findGateway(record.id);
+  if (!known) return addGateway(state_, record, odomToMap, scan);
+  Gateway& g = state_.gateways.at(*known);
+  g.record = record;
+  g.odomToMap = odomToMap;
+  if (announceUpdate) emitEvent(state_, K::GatewayUpdated, 0, 0, *known, scan);
+  return *known;
+}
+
+std::optional<std::size_t> RgMappingKernel::sideOf(GatewayId id, std::size_t crossing) {
+  Gateway& g = state_.gateways.at(id);
+  for (std::size_t side : {kSideA, kSideB})
+    if (g.sides[side].crossing == crossing) return side;
+  for (std::size_t side : {kSideA, kSideB})
+    if (g.sides[side].crossing == kNoCrossing) {
+      g.sides[side].crossing = crossing;
+      return side;
+    }
+  return std::nullopt;
+}
+
+RegionId RgMappingKernel::joinSide(GatewayId id, std::size_t side, RegionId region, DataId scan) {
+  const RegionId there = state_.gateways.at(id).sides[side].region;
+  if (there == region) return region;
+  if (there == 0) {
+    attachSide(state_, id, side, region, scan);
+    return region;
+  }
+  return rgnav::mergeRegions(state_, there, region, scan);  // the same place seen twice: a loop closed
+}
+
+void RgMappingKernel::observe(const GatewayEvent& event, const Pose2D& odomToMap, const Pose2D& robot) {
+  const GatewayRecord& record = event.gateway;
+  const DataId scan = record.lastScan;
+  if (!isTransitionLabel(record.label())) {
+    const std::optional<GatewayId> known = findGateway(record.id);
+    if (!known) return;
+    const Gateway& g = state_.gateways.at(*known);
+    if (g.traversalsFrom[kSideA] + g.traversalsFrom[kSideB] == 0)
+      dropGateway(state_, *known, scan);
+    else
+      takeIn(record, odomToMap, true, scan);
+    return;
+  }
+  const GatewayId id = takeIn(record, odomToMap, event.kind == GatewayEventKind::Updated, scan);
+  const std::optional<std::size_t> crossing = robotCrossing(state_.gateways.at(id), {robot.x, robot.y}, config_.sides);
+  if (!crossing) return;
+  const std::optional<std::size_t> side = sideOf(id, *crossing);
+  if (!side) return;
+  repairMissedCrossing(id, *side, kNoScanLimit);
+  joinSide(id, *side, state_.current, scan);
+}
+
+void RgMappingKernel::traverse(const GatewayEvent& event, const Pose2D& odomToMap) {
+  const TraversalReport& t = event.traversal;
+  const GatewayId id = takeIn(event.gateway, odomToMap, false, t.scanId);
+  const std::optional<std::size_t> from = sideOf(id, t.fromSide);
+  const std::optional<std::size_t> to = sideOf(id, t.toSide);
+  if (!from || !to) {  // through further sides of a hallway area: no structure (see the header)
+    emitEvent(state_, K::GatewayTraversed, state_.current, state_.current, id, t.scanId);
+    return;
+  }
+  repairMissedCrossing(id, *from, t.scanId);
+  ++state_.gateways.at(id).traversalsFrom[*from];
+  const RegionId left = joinSide(id, *from, state_.current, t.scanId);
+  RegionId entered = state_.gateways.at(id).sides[*to].region;
+  if (entered == left) {  // a neutralised gateway: the robot stays where it is
+    emitEvent(state_, K::GatewayTraversed, left, left, id, t.scanId);
+    return;
+  }
+  if (entered == 0) {
+    entered = createRegion(state_, crossingPose(t, odomToMap), t.scanId);
+    attachSide(state_, id, *to, entered, t.scanId);
+  } else {
+    emitEvent(state_, K::RegionEntered, entered, 0, 0, t.scanId);
+  }
+  moveScans(state_, left, entered, t.scanId, kNoScanLimit);
+  state_.current = entered;
+  state_.visitStart = t.scanId;
+  emitEvent(state_, K::GatewayTraversed, left, entered, id, t.scanId);
+  leave(left, t.scanId);
+}
+
+void RgMappingKernel::repairMissedCrossing(GatewayId id, std::size_t robotSide, DataId before) {
+  const RegionId cur = state_.current;
+  const Gateway& g = state_.gateways.at(id);
+  if (g.sides[robotSide].region == cur) return;
+  std::vector<DataId> visit;
+  std::vector<Eigen::Vector2d> path;
+  for (DataId s : state_.regions.at(cur).scans)
+    if (s >= state_.visitStart && s < before) {
+      const Pose2D& p = state_.scans.at(s).corrected;
+      visit.push_back(s);
+      path.emplace_back(p.x, p.y);
+    }
+  const std::optional<std::size_t> step = lastPathCrossing(g, path, g.sides[robotSide].crossing);
+  if (!step) return;
+
+  const DataId k = visit[*step];
+  const RegionId split = createRegion(state_, state_.scans.at(k).corrected, k);
+  moveScans(state_, cur, split, k, before);
+  const std::set<GatewayId> attached = state_.regions.at(cur).gateways;
+  for (GatewayId other : attached) {
+    if (other == id) continue;
+    for (std::size_t side : {kSideA, kSideB}) {
+      const GatewaySideRef ref = state_.gateways.at(other).sides[side];
+      if (ref.region == cur && ref.attachedAt >= k && ref.attachedAt < before)
+        attachSide(state_, other, side, split, ref.attachedAt);
+    }
+  }
+  state_.current = split;
+  state_.visitStart = k;
+  emitEvent(state_, K::GatewayRepaired, cur, split, id, k);
+  leave(cur, k);
+  joinSide(id, otherSide(robotSide), cur, k);
+  joinSide(id, robotSide, split, k);
+}
+
+void RgMappingKernel::leave(RegionId region, DataId scan) {
+  Region& r = state_.regions.at(region);
+  if (r.scans.empty()) {
+    removeRegion(state_, region, scan);
+    return;
+  }
+  emitEvent(state_, r.finalised ? K::RegionUpdated : K::RegionFinalised, region, 0, 0, scan);
+  r.finalised = true;
+}
+
+void RgMappingKernel::revisePoses(std::span<const CorrectedPose> poses) {
+  std::map<DataId, Pose2D> revised;
+  for (const CorrectedPose& p : poses) {
+    requireFinite(p.pose, "revised pose of scan " + std::to_string(p.scanId));
+    revised[p.scanId] = p.pose;
+  }
+  bool changed = false;
+  for (const auto& [id, pose] : revised) {
+    const auto stored = state_.scans.find(id);
+    if (stored == state_.scans.end() || stored->second.corrected == pose) continue;
+    stored->second.corrected = pose;
+    changed = true;
+  }
+  for (auto& [id, g] : state_.gateways) {
+    const auto pose = revised.find(g.record.lastScan);
+    if (pose == revised.end()) continue;
+    const Pose2D placed = odometryToMap(g.record, pose->second);
+    changed = changed || !(placed == g.odomToMap);
+    g.odomToMap = placed;
+  }
+  if (changed) emitEvent(state_, K::PosesRevised, 0, 0, 0, state_.lastScanId);
+}
+
+RegionId RgMappingKernel::mergeRegions(RegionId a, RegionId b) {
+  if (!state_.regions.contains(a) || !state_.regions.contains(b) || a == b)
+    throw InvalidArgumentError("cannot merge region " + std::to_string(a) + " and region " + std::to_string(b));
+  const RegionId merged = rgnav::mergeRegions(state_, a, b, state_.lastScanId);
+  models_.prune(state_);
+  return merged;
+}
+
+void RgMappingKernel::nameRegion(RegionId region, const std::string& name) {
+  const auto r = state_.regions.find(region);
+  if (r == state_.regions.end()) throw InvalidArgumentError("no region " + std::to_string(region));
+  const std::optional<RegionId> holder = regionByName(name);
+  if (!name.empty() && holder && *holder != region)
+    throw InvalidArgumentError("region " + std::to_string(*holder) + " is already named \"" + name + "\"");
+  r->second.name = name;
+  emitEvent(state_, K::RegionNamed, region, 0, 0, state_.lastScanId);
+}
+
+std::optional<RegionId> RgMappingKernel::regionByName(const std::string& name) const {
+  for (const auto& [id, r] : state_.regions)
+    if (!name.empty() && r.name == name) return id;
+  return std::nullopt;
+}
+
+void RgMappingKernel::recordEdgeTraversal(const EdgeKey& edge, double lengthM, double timeS) {
+  RgGraph g = graph();
+  g.recordTraversal(edge, lengthM, timeS);
+  storeCosts(state_, g.costs());
+  emitEvent(state_, K::CostsLearned, 0, 0, edge.a.gateway, state_.lastScanId);
+}
+
+void RgMappingKernel::recordDoorState(GatewayId gateway, bool traversable) {
+  RgGraph g = graph();
+  g.recordDoorState(gateway, traversable);
+  storeCosts(state_, g.costs());
+  emitEvent(state_, K::CostsLearned, 0, 0, gateway, state_.lastScanId);
+}
+
+CurrentRegion RgMappingKernel::currentRegion() const {
+  if (state_.current == 0) throw NotAvailableError("no region yet");
+  const RegionLineMap& lines = models_.lineMap(state_, state_.current);
+  return {state_.regions.at(state_.current), lines, models_.description(state_, state_.current)};
+}
+
+const RegionLineMap& RgMappingKernel::lineMap(RegionId region) const { return models_.lineMap(state_, region); }
+
+const RegionDescription& RgMappingKernel::description(RegionId region) const {
+  return models_.description(state_, region);
+}
+
+PlacedGateway RgMappingKernel::gatewayInRegion(GatewayId gateway, RegionId region) const {
+  const auto g = state_.gateways.find(gateway);
+  const auto r = state_.regions.find(region);
+  if (g == state_.gateways.end() || r == state_.regions.end())
+    throw NotAvailableError("no gateway " + std::to_string(gateway) + " or region " + std::to_string(region));
+  return placeGateway(g->second, r->second.frame);
+}
+
+std::vector<RgMapEvent> RgMappingKernel::eventsSince(RgMapEventId afterId) const {
+  if (afterId >= state_.events.size()) return {};
+  return {state_.events.begin() + static_cast<std::ptrdiff_t>(afterId), state_.events.end()};
+}
+
+RgGraph RgMappingKernel::graph() const {
+  RgGraph g(costTable(state_, config_.costs));
+  g.build(graphSpec(state_));
+  return g;
+}
+
+std::vector<std::string> RgMappingKernel::checkConsistency() const { return rgnav::checkConsistency(state_); }
+
+}  // namespace rgnav

@@ -1,0 +1,151 @@
+// RgMappingKernel: the RG Mapping Kernel's core (thesis 2.2, 5.2, 6.1.1), free of middleware. It takes
+// the aligned scans (ScanMapper) and the gateway hypotheses (GatewayDetection) by ID and keeps the
+// RG Map consistently structured:
+//   - Stacking (2.2): every scan goes into the current region; its line map and preliminary
+//     description are available at any time (currentRegion()).
+//   - Detected / Updated gateway: the hypothesis is placed into the map frame (GatewayGeometry.h)
+//     and the current region is attached on the side the robot is on.
+//   - Traversed gateway: the region left behind is finalised (RegionFinalised, or RegionUpdated
+//     after a revisit: its description is then computed from all its scans), and the robot enters
+//     the region on the other side: the one already known there (a revisit updates it, thesis
+//     2.2) or a new one. Scans at or after the traversal scan that were stacked before the event
+//     came move along into the entered region.
+//   - Loop closing (6.1.1, figures 6.1, 6.2): a gateway observed or traversed from a side that
+//     already lies in another region than the current one means both are the same place: they are
+//     merged (the lower ID stays). A gateway with the same region on both sides is neutralised:
+//     kept (it still serves localisation), flagged, and it joins no two regions.
+//   - Missed traversals (6.1.1, figure 6.4): when the robot observes or traverses a gateway from
+//     a side whose region is not the current one, and its path in this visit of the current
+//     region crossed the gateway's line onto that side without a traversal being reported, the
+//     region is split at that crossing: the scans from there on (and the gateway sides attached
+//     since) form a new region on the robot's side, which then joins whatever region already lies
+//     there. Deliberate difference: the thesis leaves such errors to later loop closings
+//     ("temporary inconsistency"); we repair what the current visit shows and leave earlier visits
+//     to loop closing. Not for hallway areas (GatewayGeometry.h).
+//   - Requests: merge two regions (e.g. "these are the same room", 6.1.1), name regions (semantics),
+//     revise corrected poses (SLAM loop closures: descriptions follow, RegionModels.h), learn RG
+//     Graph costs (5.4).
+// Every change is an RgMapEvent; the whole state is RgMapState (serialise it with RgMapCodec.h).
+// Same inputs, same map: nothing depends on addresses, hashing or time.
+// Deliberate differences: the thesis matches scans within a region (ScanStudio); we take the
+// ScanMapper's corrected poses as they are and treat a corrected pose as the sensor pose (as the
+// ScanMapper does). A hallway area joins at most two regions here: the side the robot first saw
+// it from and the first other side it was traversed to or seen from; traversals and
+// observations through its further sides change no structure. Labels that are no transition
+// (Deadend, Hallway) drop a gateway that was never traversed and are kept as a label otherwise.
+// The final description is computed when first asked for (a checkpoint does not hold it), not at
+// finalisation, so that a region that cannot be described never blocks the structuring.
+#pragma once
+
+#include <optional>
+#include <span>
+#include <string>
+#include <vector>
+
+#include "core/gateways/detection/GatewayRecord.h"
+#include "core/rgmap/graph/RgGraph.h"
+#include "core/rgmap/kernel/GatewayGeometry.h"
+#include "core/rgmap/kernel/RegionModels.h"
+#include "core/rgmap/kernel/RgMapState.h"
+
+namespace rgnav {
+
+struct RgMappingKernelConfig {
+  SideEvidenceConfig sides;
+  RegionModelConfig models;
+  EdgeCostConfig costs;
+};
+
+// A revised corrected pose of scan `scanId` (map frame).
+struct CorrectedPose {
+  DataId scanId = 0;
+  Pose2D pose;
+};
+
+// The current region with its line map and (preliminary) description, valid until the next change.
+struct CurrentRegion {
+  const Region& region;
+  const RegionLineMap& lines;
+  const RegionDescription& description;
+};
+
+class RgMappingKernel {
+ public:
+  // An empty map. Throws ConfigError / InvalidArgumentError for a bad configuration.
+  explicit RgMappingKernel(const RgMappingKernelConfig& config = {});
+  // Resumes from a saved state (RgMapCodec.h). Throws InvalidArgumentError naming the first
+  // violation of checkConsistency() or a learned cost the cost table refuses.
+  RgMappingKernel(const RgMappingKernelConfig& config, RgMapState state);
+
+  // Stacks the scan into the current region (the first scan creates region 1 with its frame at
+  // `corrected`). Throws InvalidArgumentError (and changes nothing) for an ID not above
+  // state().lastScanId or a non-finite pose.
+  void addScan(const LaserScan& scan, const Pose2D& corrected);
+
+  // Takes in one event of the gateway detector; `lastScanCorrected` is the corrected pose of the
+  // scan event.gateway.lastScan. Throws InvalidArgumentError (and changes nothing) for an ID not
+  // above state().lastGatewayEventId, a malformed event (validateGatewayEvent, KernelInputs.h) or
+  // a non-finite pose.
+  void addGatewayEvent(const GatewayEvent& event, const Pose2D& lastScanCorrected);
+
+  // New corrected poses from SLAM. Poses of scans the kernel does not hold still re-place the
+  // gateways last seen in them. Throws InvalidArgumentError (and changes nothing) for a
+  // non-finite pose.
+  void revisePoses(std::span<const CorrectedPose> poses);
+
+  // Merges two regions on request; returns the merged region (the lower ID). Throws
+  // InvalidArgumentError for an unknown region or a == b.
+  RegionId mergeRegions(RegionId a, RegionId b);
+
+  // Names a region (an empty name removes the name). Throws InvalidArgumentError for an unknown
+  // region or a name another region has.
+  void nameRegion(RegionId region, const std::string& name);
+  std::optional<RegionId> regionByName(const std::string& name) const;
+
+  // Cost adaptation of the RG Graph (EdgeCostTable.h). Throw InvalidArgumentError for an edge or
+  // door that is not in the graph, or bad measurements.
+  void recordEdgeTraversal(const EdgeKey& edge, double lengthM, double timeS);
+  void recordDoorState(GatewayId gateway, bool traversable);
+
+  const RgMapState& state() const { return state_; }
+  RegionId currentRegionId() const { return state_.current; }
+  // Throws NotAvailableError before the first input.
+  CurrentRegion currentRegion() const;
+  // The line map / description of a region in its own frame. Throw NotAvailableError for an
+  // unknown region (and InvalidArgumentError as RegionModels.h says).
+  const RegionLineMap& lineMap(RegionId region) const;
+  const RegionDescription& description(RegionId region) const;
+  // A gateway's points in the frame of one of its regions (or any region). Throws
+  // NotAvailableError for an unknown gateway or region.
+  PlacedGateway gatewayInRegion(GatewayId gateway, RegionId region) const;
+
+  // The events after `afterId`, oldest first.
+  std::vector<RgMapEvent> eventsSince(RgMapEventId afterId) const;
+  // The RG Graph of the map now, with the learned costs (RgMapGraph.h).
+  RgGraph graph() const;
+  // checkConsistency(state()) (RgMapConsistency.h).
+  std::vector<std::string> checkConsistency() const;
+
+ private:
+  void ensureCurrentRegion(const Pose2D& frame, DataId scan);
+  void observe(const GatewayEvent& event, const Pose2D& odomToMap, const Pose2D& robot);
+  void traverse(const GatewayEvent& event, const Pose2D& odomToMap);
+  std::optional<GatewayId> findGateway(DetectorGatewayId detectorId) const;
+  // The kernel's gateway for the detector's record, added or refreshed.
+  GatewayId takeIn(const GatewayRecord& record, const Pose2D& odomToMap, bool announceUpdate, DataId scan);
+  // The side of gateway `id` with crossing point `crossing`; a hallway area's unknown side takes it.
+  std::optional<std::size_t> sideOf(GatewayId id, std::size_t crossing);
+  // `region` lies on side `side` of gateway `id`: attach it, or merge it with the region there.
+  // Returns the region that lies there now.
+  RegionId joinSide(GatewayId id, std::size_t side, RegionId region, DataId scan);
+  // The repair of a missed traversal (see above), looking at the current visit's scans before `before`.
+  void repairMissedCrossing(GatewayId id, std::size_t robotSide, DataId before);
+  // The robot left `region` at `scan`: finalised, or removed if it holds no scan.
+  void leave(RegionId region, DataId scan);
+
+  RgMappingKernelConfig config_;
+  RgMapState state_;
+  mutable RegionModels models_;
+};
+
+}  // namespace rgnav

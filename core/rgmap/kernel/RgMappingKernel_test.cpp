@@ -1,0 +1,346 @@
+// Tests the RG Mapping Kernel's online structuring (thesis 2.2, 5.2) on a synthetic floor, a
+// hallway with two rooms behind doors: three regions and two gateways with references both ways,
+// gateways placed from the drifting odometry frame into the map frame, scans in the region they
+// were taken in, a revisited room updated and not duplicated, region descriptions, naming,
+// merging on request, a path through the RG Graph, revised SLAM poses, bad inputs refused.
+#include "core/rgmap/kernel/RgMappingKernel.h"
+
+#include <cppunit/extensions/HelperMacros.h>
+
+#include <algorithm>
+
+#include "core/common/Errors.h"
+#include "core/lines/ScanPoints.h"
+#include "core/rgmap/graph/RgPathSearch.h"
+#include "core/rgmap/kernel/testing/SyntheticTour.h"
+
+using namespace rgnav;
+using rgnav::testing::feedChecked;
+using rgnav::testing::twoRoomTour;
+
+namespace {
+
+constexpr RegionId kHallway = 1, kRoom1 = 2, kRoom2 = 3;
+constexpr GatewayId kDoor1 = 1, kDoor2 = 2;
+
+RgMappingKernel mappedFloor() {
+  const std::vector<rgnav::testing::KernelInput> inputs = twoRoomTour().inputs();
+  return rgnav::testing::mapped(inputs, inputs.size());
+}
+
+std::string joinedViolations(const RgMappingKernel& k) {
+  std::string out;
+  for (const std::string& v : k.checkConsistency()) out += v + "\n";
+  return out;
+}
+
+std::size_t countEvents(const RgMappingKernel& k, RgMapEventKind kind, RegionId region = 0) {
+  return static_cast<std::size_t>(
+      std::count_if(k.state().events.begin(), k.state().events.end(),
+                    [&](const RgMapEvent& e) { return e.kind == kind && (region == 0 || e.region == region); }));
+}
+
+// A hallway-area gateway at the south-east corner of ringCorridor() (the square x in [8, 10],
+// y in [0, 2]) as the detector reports it to a robot coming from the west: corners hidden-left,
+// front-left, front-right, hidden-right; crossing points hidden, left, front, right; all in the
+// tours' odometry frame.
+GatewayEvent cornerEvent(GatewayEventId id, GatewayEventKind kind, const StoredScan& at, std::size_t from = 0,
+                         std::size_t to = 1) {
+  const auto odom = [](double x, double y) { return transformPoint(rgnav::testing::kTourDrift, {x, y}); };
+  GatewayEvent e;
+  e.id = id;
+  e.kind = kind;
+  GatewayRecord& r = e.gateway;
+  r.id = 7;
+  r.kind = GatewayKind::HallwayArea;
+  r.classes = {{"L-Turn", 0.8}, {"T-Junction", 0.2}};
+  r.gatewayPoints = {odom(8, 2), odom(10, 2), odom(10, 0), odom(8, 0)};
+  r.crossingPoints = {odom(7.5, 1), odom(9, 2.5), odom(10.5, 1), odom(9, -0.5)};
+  r.widthM = 2.0;
+  r.firstScan = r.lastScan = at.scan.id;
+  r.lastPose = at.scan.odometry;
+  e.traversal = {at.scan.id, from, to, odom(at.corrected.x, at.corrected.y), Eigen::Vector2d::UnitY()};
+  return e;
+}
+
+}  // namespace
+
+class RgMappingKernelTest : public CppUnit::TestFixture {
+  CPPUNIT_TEST_SUITE(RgMappingKernelTest);
+  CPPUNIT_TEST(floorHasThreeRegionsAndTwoGateways);
+  CPPUNIT_TEST(gatewaysArePlacedInTheMapFrame);
+  CPPUNIT_TEST(scansLieInTheRegionTheyWereTakenIn);
+  CPPUNIT_TEST(revisitedRoomIsUpdatedNotDuplicated);
+  CPPUNIT_TEST(descriptionsStayInsideTheirRooms);
+  CPPUNIT_TEST(preliminaryDescriptionGrowsWithTheScans);
+  CPPUNIT_TEST(hallwayTurnJoinsTwoRegions);
+  CPPUNIT_TEST(regionsAreNamedAndFoundByName);
+  CPPUNIT_TEST(regionsAreMergedOnRequest);
+  CPPUNIT_TEST(pathLeadsThroughBothDoors);
+  CPPUNIT_TEST(learnedCostsAreKept);
+  CPPUNIT_TEST(revisedPosesMoveTheDescription);
+  CPPUNIT_TEST(badInputsAreRefused);
+  CPPUNIT_TEST_SUITE_END();
+
+ public:
+  void floorHasThreeRegionsAndTwoGateways() {
+    const RgMappingKernel k = mappedFloor();
+    const RgMapState& s = k.state();
+    CPPUNIT_ASSERT_EQUAL(std::size_t(3), s.regions.size());
+    CPPUNIT_ASSERT_EQUAL(std::size_t(2), s.gateways.size());
+    CPPUNIT_ASSERT((s.regions.at(kHallway).gateways == std::set<GatewayId>{kDoor1, kDoor2}));
+    CPPUNIT_ASSERT((s.regions.at(kRoom1).gateways == std::set<GatewayId>{kDoor1}));
+    CPPUNIT_ASSERT((s.regions.at(kRoom2).gateways == std::set<GatewayId>{kDoor2}));
+    // Side A is the side each door was first seen from: the hallway.
+    const Gateway& d1 = s.gateways.at(kDoor1);
+    const Gateway& d2 = s.gateways.at(kDoor2);
+    CPPUNIT_ASSERT_EQUAL(kHallway, d1.sides[kSideA].region);
+    CPPUNIT_ASSERT_EQUAL(kRoom1, d1.sides[kSideB].region);
+    CPPUNIT_ASSERT_EQUAL(kHallway, d2.sides[kSideA].region);
+    CPPUNIT_ASSERT_EQUAL(kRoom2, d2.sides[kSideB].region);
+    CPPUNIT_ASSERT_EQUAL(GatewayId(11), d1.record.id);
+    CPPUNIT_ASSERT(d1.door() && !d1.neutralised && !d2.neutralised);
+    CPPUNIT_ASSERT_EQUAL(std::size_t(2), d1.traversalsFrom[kSideA]);
+    CPPUNIT_ASSERT_EQUAL(std::size_t(2), d1.traversalsFrom[kSideB]);
+    CPPUNIT_ASSERT_EQUAL(kHallway, k.currentRegionId());
+    CPPUNIT_ASSERT_EQUAL(std::size_t(3), countEvents(k, RgMapEventKind::RegionCreated));
+    for (std::size_t i = 0; i < s.events.size(); ++i) CPPUNIT_ASSERT_EQUAL(RgMapEventId(i + 1), s.events[i].id);
+  }
+
+  void gatewaysArePlacedInTheMapFrame() {
+    const RgMappingKernel k = mappedFloor();
+    const PlacedGateway d1 = placeGateway(k.state().gateways.at(kDoor1));
+    CPPUNIT_ASSERT((d1.gatewayPoints[0] - Eigen::Vector2d(3.55, 2)).norm() < 1e-9);
+    CPPUNIT_ASSERT((d1.gatewayPoints[1] - Eigen::Vector2d(4.45, 2)).norm() < 1e-9);
+    CPPUNIT_ASSERT((d1.crossingPoints[0] - Eigen::Vector2d(4, 1.5)).norm() < 1e-9);  // the hallway side
+    CPPUNIT_ASSERT((traversalDirection(k.state().gateways.at(kDoor1)) - Eigen::Vector2d(0, 1)).norm() < 1e-9);
+    // In room 1's own frame, mapped back with the frame, it is the same door.
+    const Pose2D frame = k.state().regions.at(kRoom1).frame;
+    const PlacedGateway inRoom = k.gatewayInRegion(kDoor1, kRoom1);
+    CPPUNIT_ASSERT((transformPoint(frame, inRoom.gatewayPoints[1]) - Eigen::Vector2d(4.45, 2)).norm() < 1e-9);
+  }
+
+  void scansLieInTheRegionTheyWereTakenIn() {
+    const RgMappingKernel k = mappedFloor();
+    const RgMapState& s = k.state();
+    for (const auto& [id, region] : s.regions)
+      for (DataId scan : region.scans) {
+        const Pose2D& p = s.scans.at(scan).corrected;
+        const RegionId truth = p.y < 2.0 ? kHallway : p.x < 6.5 ? kRoom1 : kRoom2;
+        CPPUNIT_ASSERT_EQUAL_MESSAGE("scan " + std::to_string(scan), truth, id);
+      }
+  }
+
+  void revisitedRoomIsUpdatedNotDuplicated() {
+    const RgMappingKernel k = mappedFloor();
+    CPPUNIT_ASSERT_EQUAL(std::size_t(1), countEvents(k, RgMapEventKind::RegionEntered, kRoom1));
+    CPPUNIT_ASSERT_EQUAL(std::size_t(1), countEvents(k, RgMapEventKind::RegionFinalised, kRoom1));
+    CPPUNIT_ASSERT_EQUAL(std::size_t(1), countEvents(k, RgMapEventKind::RegionUpdated, kRoom1));
+    CPPUNIT_ASSERT_EQUAL(std::size_t(1), countEvents(k, RgMapEventKind::RegionFinalised, kRoom2));
+    CPPUNIT_ASSERT_EQUAL(std::size_t(0), countEvents(k, RgMapEventKind::RegionUpdated, kRoom2));
+    // Both visits' scans are in room 1: the first visit's last scan and the second visit's first.
+    const std::vector<DataId>& scans = k.state().regions.at(kRoom1).scans;
+    const auto gap = std::adjacent_find(scans.begin(), scans.end(), [](DataId a, DataId b) { return b != a + 1; });
+    CPPUNIT_ASSERT(gap != scans.end());
+    CPPUNIT_ASSERT_EQUAL(scans.size(), k.description(kRoom1).scanCount);
+  }
+
+  void descriptionsStayInsideTheirRooms() {
+    const RgMappingKernel k = mappedFloor();
+    const struct {
+      RegionId region;
+      Eigen::AlignedBox2d room;
+    } cases[] = {{kRoom1, {Eigen::Vector2d(2, 2), Eigen::Vector2d(6, 6)}},
+                 {kRoom2, {Eigen::Vector2d(7, 2), Eigen::Vector2d(11, 6)}},
+                 {kHallway, {Eigen::Vector2d(0, 0), Eigen::Vector2d(12, 2)}}};
+    for (const auto& c : cases) {
+      const RegionDescription& d = k.description(c.region);
+      CPPUNIT_ASSERT(!d.boundingBox.isEmpty());
+      CPPUNIT_ASSERT(d.freespaceBytes() > 0);
+      CPPUNIT_ASSERT(k.lineMap(c.region).lineCount() >= 3);
+      const Pose2D frame = k.state().regions.at(c.region).frame;
+      const Eigen::AlignedBox2d room(c.room.min().array() - 0.1, c.room.max().array() + 0.1);
+      for (auto corner : {Eigen::AlignedBox2d::BottomLeft, Eigen::AlignedBox2d::BottomRight,
+                          Eigen::AlignedBox2d::TopLeft, Eigen::AlignedBox2d::TopRight}) {
+        const Eigen::Vector2d p = transformPoint(frame, d.boundingBox.corner(corner));
+        CPPUNIT_ASSERT_MESSAGE("region " + std::to_string(c.region), room.contains(p));
+      }
+    }
+  }
+
+  void preliminaryDescriptionGrowsWithTheScans() {
+    RgMappingKernel k;
+    const std::vector<rgnav::testing::KernelInput> inputs = twoRoomTour().inputs();
+    CPPUNIT_ASSERT_THROW(k.currentRegion(), NotAvailableError);
+    CPPUNIT_ASSERT_EQUAL(std::string(), feedChecked(k, inputs, 0, 5));
+    const std::size_t early = k.currentRegion().description.scanCount;
+    CPPUNIT_ASSERT_EQUAL(std::string(), feedChecked(k, inputs, 5, 10));
+    const CurrentRegion now = k.currentRegion();
+    CPPUNIT_ASSERT_EQUAL(kHallway, now.region.id);
+    CPPUNIT_ASSERT(now.description.scanCount > early);
+    CPPUNIT_ASSERT_EQUAL(now.region.scans.size(), now.lines.scanCount());
+  }
+
+  void hallwayTurnJoinsTwoRegions() {
+    rgnav::testing::SyntheticTour tour(rgnav::testing::ringCorridor(), rgnav::testing::kTourDrift);
+    tour.setReports(21, rgnav::testing::DoorReports::None);
+    tour.driveThrough({{6.1, 1}, {9, 1}, {9, 5}});
+    RgMappingKernel k;
+    bool detected = false, traversed = false;
+    for (const rgnav::testing::KernelInput& in : tour.inputs()) {
+      rgnav::testing::feed(k, in);
+      const StoredScan& at = *in.scan;
+      if (!detected && at.corrected.x >= 6.5) {
+        k.addGatewayEvent(cornerEvent(1, GatewayEventKind::Detected, at), at.corrected);
+        detected = true;
+      }
+      if (!traversed && at.corrected.y > 2.0) {
+        k.addGatewayEvent(cornerEvent(2, GatewayEventKind::Traversed, at), at.corrected);
+        traversed = true;
+      }
+      CPPUNIT_ASSERT_EQUAL(std::string(), joinedViolations(k));
+    }
+    const RgMapState& s = k.state();
+    CPPUNIT_ASSERT_EQUAL(std::size_t(2), s.regions.size());
+    const Gateway& corner = s.gateways.at(1);
+    CPPUNIT_ASSERT(!corner.door());
+    CPPUNIT_ASSERT(corner.sides[kSideA].region == 1 && corner.sides[kSideA].crossing == 0);
+    CPPUNIT_ASSERT(corner.sides[kSideB].region == 2 && corner.sides[kSideB].crossing == 1);
+    // Each region is bounded by the side of the square it lies beyond.
+    const std::vector<GatewaySegment> west = regionGatewaySegments(s, s.regions.at(1));
+    const std::vector<GatewaySegment> north = regionGatewaySegments(s, s.regions.at(2));
+    CPPUNIT_ASSERT(west.size() == 1 && north.size() == 1);
+    const Pose2D& frame2 = s.regions.at(2).frame;
+    CPPUNIT_ASSERT((transformPoint(s.regions.at(1).frame, west[0].a) - Eigen::Vector2d(8, 0)).norm() < 1e-9);
+    CPPUNIT_ASSERT((transformPoint(frame2, north[0].a) - Eigen::Vector2d(8, 2)).norm() < 1e-9);
+    CPPUNIT_ASSERT((transformPoint(frame2, north[0].b) - Eigen::Vector2d(10, 2)).norm() < 1e-9);
+    const RgGraph graph = k.graph();
+    CPPUNIT_ASSERT_EQUAL(std::size_t(2), graph.nodes().size());
+    CPPUNIT_ASSERT((graph.nodes()[1].position - Eigen::Vector2d(9, 2.5)).norm() < 1e-9);
+    // Through two further sides of the square: recorded, but no structure changes.
+    const StoredScan& last = *tour.inputs().back().scan;
+    k.addGatewayEvent(cornerEvent(3, GatewayEventKind::Traversed, last, 2, 3), last.corrected);
+    CPPUNIT_ASSERT_EQUAL(std::size_t(2), k.state().regions.size());
+    CPPUNIT_ASSERT_EQUAL(RegionId(2), k.currentRegionId());
+    CPPUNIT_ASSERT_EQUAL(RgMapEventKind::GatewayTraversed, k.state().events.back().kind);
+  }
+
+  void regionsAreNamedAndFoundByName() {
+    RgMappingKernel k = mappedFloor();
+    k.nameRegion(kRoom1, "office");
+    k.nameRegion(kRoom2, "lab");
+    CPPUNIT_ASSERT_EQUAL(kRoom1, *k.regionByName("office"));
+    CPPUNIT_ASSERT_EQUAL(kRoom2, *k.regionByName("lab"));
+    CPPUNIT_ASSERT(!k.regionByName("kitchen"));
+    CPPUNIT_ASSERT_THROW(k.nameRegion(kHallway, "office"), InvalidArgumentError);
+    CPPUNIT_ASSERT_THROW(k.nameRegion(99, "nowhere"), InvalidArgumentError);
+    k.nameRegion(kRoom1, "office");  // again: no conflict with itself
+    k.nameRegion(kRoom2, "");
+    CPPUNIT_ASSERT(!k.regionByName("lab"));
+    CPPUNIT_ASSERT_EQUAL(RgMapEventKind::RegionNamed, k.state().events.back().kind);
+    CPPUNIT_ASSERT(k.checkConsistency().empty());
+  }
+
+  void regionsAreMergedOnRequest() {
+    RgMappingKernel k = mappedFloor();
+    k.nameRegion(kRoom2, "lab");
+    const std::size_t scans = k.state().regions.at(kRoom1).scans.size() + k.state().regions.at(kRoom2).scans.size();
+    CPPUNIT_ASSERT_EQUAL(kRoom1, k.mergeRegions(kRoom2, kRoom1));
+    const RgMapState& s = k.state();
+    CPPUNIT_ASSERT_EQUAL(std::size_t(2), s.regions.size());
+    CPPUNIT_ASSERT_EQUAL(scans, s.regions.at(kRoom1).scans.size());
+    CPPUNIT_ASSERT((s.regions.at(kRoom1).gateways == std::set<GatewayId>{kDoor1, kDoor2}));
+    CPPUNIT_ASSERT_EQUAL(kRoom1, s.gateways.at(kDoor2).sides[kSideB].region);
+    CPPUNIT_ASSERT_EQUAL(kRoom1, *k.regionByName("lab"));  // the lower one had no name
+    const RgMapEvent& merged = s.events.back();
+    CPPUNIT_ASSERT(merged.kind == RgMapEventKind::RegionsMerged && merged.region == kRoom1 && merged.other == kRoom2);
+    CPPUNIT_ASSERT(k.checkConsistency().empty());
+    CPPUNIT_ASSERT_EQUAL(scans, k.description(kRoom1).scanCount);
+    CPPUNIT_ASSERT_THROW(k.mergeRegions(kRoom1, kRoom1), InvalidArgumentError);
+    CPPUNIT_ASSERT_THROW(k.mergeRegions(kRoom1, kRoom2), InvalidArgumentError);
+  }
+
+  void pathLeadsThroughBothDoors() {
+    const RgMappingKernel k = mappedFloor();
+    const RgGraph graph = k.graph();
+    CPPUNIT_ASSERT_EQUAL(std::size_t(4), graph.nodes().size());
+    const RgPath path = findPath(graph, {kRoom1, {4, 4.5}}, {kRoom2, {9, 4.5}});
+    CPPUNIT_ASSERT_EQUAL(std::size_t(4), path.crossings.size());
+    const NodeKey expected[] = {
+        {kDoor1, GatewaySide::B}, {kDoor1, GatewaySide::A}, {kDoor2, GatewaySide::A}, {kDoor2, GatewaySide::B}};
+    const RegionId regions[] = {kRoom1, kHallway, kHallway, kRoom2};
+    for (std::size_t i = 0; i < 4; ++i) {
+      CPPUNIT_ASSERT(path.crossings[i].key == expected[i]);
+      CPPUNIT_ASSERT_EQUAL(regions[i], path.crossings[i].region);
+    }
+    // 2 m down to the door, 1 m through it, 5 m along the hallway, 1 m through, 2 m up.
+    CPPUNIT_ASSERT_DOUBLES_EQUAL(11.0, path.lengthM, 1e-9);
+  }
+
+  void learnedCostsAreKept() {
+    RgMappingKernel k = mappedFloor();
+    k.recordDoorState(kDoor2, false);
+    const EdgeKey hallway = edgeKey(EdgeKind::Region, {kDoor1, GatewaySide::A}, {kDoor2, GatewaySide::A});
+    k.recordEdgeTraversal(hallway, 5.0, 20.0);
+    CPPUNIT_ASSERT_THROW(k.recordDoorState(99, true), InvalidArgumentError);
+    k.nameRegion(kRoom2, "lab");  // any later change keeps them
+    const RgGraph graph = k.graph();
+    CPPUNIT_ASSERT_DOUBLES_EQUAL(10.0, graph.edges()[*graph.findEdge(hallway)].costM, 1e-9);
+    CPPUNIT_ASSERT(graph.edges()[*graph.findEdge(gatewayEdgeKey(kDoor2))].costM > 30.0);
+    CPPUNIT_ASSERT_EQUAL(std::size_t(2), static_cast<std::size_t>(std::count_if(
+                                             k.state().events.begin(), k.state().events.end(), [](const RgMapEvent& e) {
+                                               return e.kind == RgMapEventKind::CostsLearned;
+                                             })));
+  }
+
+  void revisedPosesMoveTheDescription() {
+    RgMappingKernel k = mappedFloor();
+    const double northWall = k.description(kRoom2).boundingBox.max().x();
+    std::vector<CorrectedPose> revised;
+    for (DataId scan : k.state().regions.at(kRoom2).scans) {
+      Pose2D p = k.state().scans.at(scan).corrected;
+      p.y += 0.5;  // as if SLAM had moved the whole room north
+      revised.push_back({scan, p});
+    }
+    revised.push_back({100000, {}});  // a scan the kernel never had: ignored
+    k.revisePoses(revised);
+    CPPUNIT_ASSERT_EQUAL(RgMapEventKind::PosesRevised, k.state().events.back().kind);
+    // The room's frame faces north (it was entered northwards): its north wall is the box's +x end.
+    CPPUNIT_ASSERT_DOUBLES_EQUAL(4.0, northWall, 0.05);
+    CPPUNIT_ASSERT_DOUBLES_EQUAL(4.5, k.description(kRoom2).boundingBox.max().x(), 0.05);
+    CPPUNIT_ASSERT(k.checkConsistency().empty());
+    const std::size_t events = k.state().events.size();
+    k.revisePoses(revised);  // nothing new
+    CPPUNIT_ASSERT_EQUAL(events, k.state().events.size());
+  }
+
+  void badInputsAreRefused() {
+    RgMappingKernel k;
+    const std::vector<rgnav::testing::KernelInput> inputs = twoRoomTour().inputs();
+    CPPUNIT_ASSERT_EQUAL(std::string(), feedChecked(k, inputs, 0, 20));
+    const std::string before = std::to_string(k.state().events.size()) + "/" + std::to_string(k.state().scans.size());
+    std::size_t last = 19;
+    while (!inputs[last].scan) --last;
+    const StoredScan& fed = *inputs[last].scan;
+    CPPUNIT_ASSERT_THROW(k.addScan(fed.scan, fed.corrected), InvalidArgumentError);
+    LaserScan next = fed.scan;
+    next.id = 1000;
+    CPPUNIT_ASSERT_THROW(k.addScan(next, {std::nan(""), 0, 0}), InvalidArgumentError);
+    const auto event = std::find_if(inputs.begin(), inputs.end(), [](const auto& in) { return in.event.has_value(); });
+    CPPUNIT_ASSERT_THROW(k.addGatewayEvent(*event->event, event->lastScanCorrected), InvalidArgumentError);  // old ID
+    GatewayEvent broken = *event->event;
+    broken.id = 1000;
+    broken.gateway.crossingPoints.pop_back();
+    CPPUNIT_ASSERT_THROW(k.addGatewayEvent(broken, event->lastScanCorrected), InvalidArgumentError);
+    broken = *event->event;
+    broken.id = 1000;
+    broken.kind = GatewayEventKind::Traversed;
+    broken.traversal.toSide = broken.traversal.fromSide;
+    CPPUNIT_ASSERT_THROW(k.addGatewayEvent(broken, event->lastScanCorrected), InvalidArgumentError);
+    CPPUNIT_ASSERT_EQUAL(before,
+                         std::to_string(k.state().events.size()) + "/" + std::to_string(k.state().scans.size()));
+    CPPUNIT_ASSERT_THROW(k.description(42), NotAvailableError);
+  }
+};
+
+CPPUNIT_TEST_SUITE_REGISTRATION(RgMappingKernelTest);
