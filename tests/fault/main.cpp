@@ -16,7 +16,6 @@
 #include <cstdio>
 #include <fstream>
 #include <iostream>
-#include <random>
 #include <sstream>
 #include <thread>
 
@@ -24,6 +23,7 @@
 #include "core/logs/OpenLog.h"
 #include "core/slam/ScanMapper.h"
 #include "core/logs/ReplayMode.h"
+#include "tests/fault/FaultSchedule.h"
 #include "tests/support/cluster/TestCluster.h"
 #include "watchdog/Spawn.h"
 #include "tools/common/CommandLine.h"
@@ -75,8 +75,6 @@ std::vector<DataId> recordedIds(const std::string& file) {
   while (in >> kind >> id && std::getline(in, rest)) ids.push_back(id);
   return ids;
 }
-
-bool running(const ModuleProcessInfo& m) { return m.state == ProcessState::Running; }
 
 // The fault-free reference: the SLAM core in-process on the same log, as the module runs it.
 std::vector<Pose2D> referencePoses(const std::string& log, const std::string& corrected) {
@@ -153,31 +151,8 @@ int main(int argc, char** argv) {
     const pid_t consumerPid = spawnProcess(consumer);
 
     // Faults spread over 85 % of the replay, in a seeded order; omniNames dies half way.
-    std::vector<int> faults(static_cast<std::size_t>(options.kills), SIGKILL);
-    faults.insert(faults.end(), static_cast<std::size_t>(options.stops), SIGSTOP);
-    std::shuffle(faults.begin(), faults.end(), std::mt19937(options.seed));
-    const auto interval = std::chrono::duration<double>(0.85 * replaySeconds / double(faults.size() + 1));
-    const auto begin = Clock::now();
-    int kills = 0, stops = 0, recovered = 0, namingRestarts = 0;
-    std::vector<double> recovery;
-    for (std::size_t i = 0; i < faults.size(); ++i) {
-      std::this_thread::sleep_until(begin + std::chrono::duration_cast<Clock::duration>(interval * double(i + 1)));
-      if (i == faults.size() / 2) {
-        const auto naming = cluster.waitFor("NameService", running, "running");
-        ::kill(static_cast<pid_t>(naming.pid), SIGKILL);
-        cluster.waitFor("NameService", [&](const ModuleProcessInfo& m) { return running(m) && m.pid != naming.pid; },
-                        "restarted");
-        ++namingRestarts;
-      }
-      const auto victim = cluster.waitFor(options.target, running, "running");
-      const auto hit = Clock::now();
-      ::kill(static_cast<pid_t>(victim.pid), faults[i]);
-      (faults[i] == SIGKILL ? kills : stops)++;
-      cluster.waitFor(options.target, [&](const ModuleProcessInfo& m) { return running(m) && m.pid != victim.pid; },
-                      "restarted");
-      recovery.push_back(std::chrono::duration<double>(Clock::now() - hit).count());
-      ++recovered;
-    }
+    const FaultRecord faults =
+        injectFaults(cluster, {{options.target}, options.kills, options.stops, 0.85 * replaySeconds, options.seed});
 
     int status = 0;
     const auto giveUp = Clock::now() + std::chrono::duration<double>(replaySeconds + 120);
@@ -202,8 +177,8 @@ int main(int argc, char** argv) {
     const auto crash = cluster.describe("CrashAtStart");
     const auto target = cluster.describe(options.target);
     const auto naming = cluster.describe("NameService");
-    const bool othersRun = running(cluster.describe("LogPlayback")) && running(target) && running(naming);
-    const bool everyFaultRestarted = target.restarts == static_cast<std::uint32_t>(kills + stops);
+    const bool othersRun = isRunning(cluster.describe("LogPlayback")) && isRunning(target) && isRunning(naming);
+    const bool everyFaultRestarted = target.restarts == static_cast<std::uint32_t>(faults.kills + faults.stops);
     double poseDifferenceMm = 0.0;
     if (mapping) {
       ScanMapperClient mapper(cluster.clientSettings());
@@ -222,13 +197,13 @@ int main(int argc, char** argv) {
               << "; NameService: " << toString(naming.state) << ", restarts=" << naming.restarts << "\n";
     if (mapping) std::printf("largest pose difference to the fault-free run: %.4f mm\n", poseDifferenceMm);
     const bool ok = WIFEXITED(status) && WEXITSTATUS(status) == 0 && ids.size() == expected && distinct == expected &&
-                    duplicates == 0 && outOfOrder == 0 && recovered == kills + stops &&
-                    crash.state == ProcessState::Fatal && othersRun && everyFaultRestarted && namingRestarts == 1 &&
+                    duplicates == 0 && outOfOrder == 0 && faults.recovered == faults.kills + faults.stops &&
+                    crash.state == ProcessState::Fatal && othersRun && everyFaultRestarted && faults.namingRestarts == 1 &&
                     poseDifferenceMm <= options.toleranceMm;
     std::printf("faults: target=%s kills=%d stops=%d recovered=%d scans_expected=%zu scans_received=%zu "
                 "duplicates=%zu out_of_order=%zu naming_restarts=%d crash_at_start=%s recovery_p95_s=%.3f",
-                options.target.c_str(), kills, stops, recovered, expected, ids.size(), duplicates, outOfOrder,
-                namingRestarts, toString(crash.state), percentile(recovery, 0.95));
+                options.target.c_str(), faults.kills, faults.stops, faults.recovered, expected, ids.size(), duplicates,
+                outOfOrder, faults.namingRestarts, toString(crash.state), percentile(faults.recoverySeconds, 0.95));
     if (mapping) std::printf(" max_pose_diff_mm=%.4f", poseDifferenceMm);
     std::printf(" result=%s\n", ok ? "PASS" : "FAIL");
     return ok ? 0 : 1;

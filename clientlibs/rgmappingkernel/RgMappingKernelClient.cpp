@@ -1,0 +1,91 @@
+// RgMappingKernelClient calls through the retrying connection (see RgMappingKernelClient.h).
+#include "clientlibs/rgmappingkernel/RgMappingKernelClient.h"
+
+#include "clientlibs/common/convert.h"
+#include "clientlibs/gatewaydetection/convert.h"
+#include "clientlibs/rgmappingkernel/convert.h"
+
+namespace rgnav {
+
+using Kernel = RGNav::RGMappingKernel_ptr;
+
+RgMappingKernelClient::RgMappingKernelClient(ClientSettings settings, std::string objectName)
+    : ModuleClientOf(std::move(objectName), settings), consumer_(settings.consumer) {}
+
+MapSummaryView RgMappingKernelClient::summary() {
+  return connection_.call("summary", [](Kernel k) { return fromIdl(k->summary()); });
+}
+
+RegionView RgMappingKernelClient::currentRegion() {
+  return connection_.call("currentRegion", [](Kernel k) {
+    RGNav::RegionInfo_var r = k->currentRegion();
+    return fromIdl(r.in());
+  });
+}
+
+RegionView RgMappingKernelClient::region(RegionId id) {
+  return connection_.call("regionById", [&](Kernel k) {
+    RGNav::RegionInfo_var r = k->regionById(id);
+    return fromIdl(r.in());
+  });
+}
+
+std::vector<RegionSummaryView> RgMappingKernelClient::regions() {
+  return connection_.call("regions", [](Kernel k) {
+    RGNav::RegionSummarySeq_var all = k->regions();
+    return fromIdlSeq<std::vector<RegionSummaryView>>(all.in(), [](const RGNav::RegionSummary& s) { return fromIdl(s); });
+  });
+}
+
+std::vector<GatewayView> RgMappingKernelClient::gateways() {
+  return connection_.call("gateways", [](Kernel k) {
+    RGNav::RgGatewaySeq_var all = k->gateways();
+    return fromIdlSeq<std::vector<GatewayView>>(all.in(), [](const RGNav::RgGateway& g) { return fromIdl(g); });
+  });
+}
+
+GraphView RgMappingKernelClient::graph() {
+  return connection_.call("graph", [](Kernel k) {
+    RGNav::RgGraphInfo_var g = k->graph();
+    return fromIdl(g.in());
+  });
+}
+
+PathView RgMappingKernelClient::findPath(RegionId startRegion, const Eigen::Vector2d& start, RegionId goalRegion,
+                                         const Eigen::Vector2d& goal) {
+  return connection_.call("findPath", [&](Kernel k) {
+    RGNav::RgPath_var p = k->findPath(startRegion, toIdl(start), goalRegion, toIdl(goal));
+    return fromIdl(p.in());
+  });
+}
+
+void RgMappingKernelClient::nameRegion(RegionId id, const std::string& name) {
+  connection_.call("nameRegion", [&](Kernel k) {
+    k->nameRegion(id, name.c_str());
+    return 0;
+  });
+}
+
+RegionId RgMappingKernelClient::regionByName(const std::string& name) {
+  return connection_.call("regionByName", [&](Kernel k) { return k->regionByName(name.c_str()); });
+}
+
+RegionId RgMappingKernelClient::mergeRegions(RegionId a, RegionId b) {
+  return connection_.call("mergeRegions", [&](Kernel k) { return k->mergeRegions(a, b); });
+}
+
+RgMapEventBatch RgMappingKernelClient::eventsSince(RgMapEventId afterId, std::uint32_t maxCount) {
+  return connection_.call("eventsSince", [&](Kernel k) {
+    RGNav::RgMapEventBatch_var b = k->eventsSince(afterId, maxCount, consumer_.c_str());
+    return fromIdl(b.in());
+  });
+}
+
+std::string RgMappingKernelClient::exportMap(const std::string& directory, const std::string& name, bool occupancy) {
+  return connection_.call("exportMap", [&](Kernel k) {
+    CORBA::String_var files = k->exportMap(directory.c_str(), name.c_str(), occupancy);
+    return std::string(files.in());
+  });
+}
+
+}  // namespace rgnav

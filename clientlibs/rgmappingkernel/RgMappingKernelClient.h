@@ -1,0 +1,36 @@
+// RgMappingKernelClient: the RG Map of the RGMappingKernel module: regions with descriptions,
+// gateways, the RG graph and paths, names and merges, the map's events by ID, export.
+#pragma once
+
+#include <vector>
+
+#include "RGMappingKernel.hh"
+#include "clientlibs/common/ModuleClient.h"
+#include "core/rgmap/kernel/RgMapViews.h"
+
+namespace rgnav {
+
+class RgMappingKernelClient : public ModuleClientOf<RGNav::RGMappingKernel> {
+ public:
+  explicit RgMappingKernelClient(ClientSettings settings = ClientSettings::fromEnvironment(),
+                                 std::string objectName = "RGMappingKernel");
+
+  MapSummaryView summary();
+  RegionView currentRegion();
+  RegionView region(RegionId id);
+  std::vector<RegionSummaryView> regions();
+  std::vector<GatewayView> gateways();
+  GraphView graph();
+  PathView findPath(RegionId startRegion, const Eigen::Vector2d& start, RegionId goalRegion, const Eigen::Vector2d& goal);
+  void nameRegion(RegionId id, const std::string& name);
+  RegionId regionByName(const std::string& name);
+  RegionId mergeRegions(RegionId a, RegionId b);
+  RgMapEventBatch eventsSince(RgMapEventId afterId, std::uint32_t maxCount);
+  // The files written, one per line.
+  std::string exportMap(const std::string& directory, const std::string& name, bool occupancy);
+
+ private:
+  std::string consumer_;
+};
+
+}  // namespace rgnav

@@ -1,0 +1,174 @@
+// Conversions between RGMappingKernel.idl types and the kernel's plain views (see convert.h).
+#include "clientlibs/rgmappingkernel/convert.h"
+
+#include "clientlibs/common/convert.h"
+#include "clientlibs/gatewaydetection/convert.h"
+#include "core/common/Errors.h"
+
+namespace rgnav {
+namespace {
+
+RGNav::RgNode node(const GraphNodeView& n) {
+  return RGNav::RgNode{n.gateway, static_cast<CORBA::ULong>(n.side), n.region, toIdl(n.position)};
+}
+GraphNodeView node(const RGNav::RgNode& n) { return {n.gateway, n.side, n.region, fromIdl(n.position)}; }
+
+}  // namespace
+
+RGNav::RegionSummary toIdl(const RegionSummaryView& s) {
+  RGNav::RegionSummary out;
+  out.id = s.id;
+  out.name = s.name.c_str();
+  out.frame = toIdl(s.frame);
+  out.scans = static_cast<CORBA::ULong>(s.scans);
+  out.finalised = s.finalised;
+  out.gateways = toIdlSeq<RGNav::GatewayIdSeq>(s.gateways, [](GatewayId id) { return id; });
+  return out;
+}
+
+RegionSummaryView fromIdl(const RGNav::RegionSummary& s) {
+  return {s.id, s.name.in(), fromIdl(s.frame), s.scans, static_cast<bool>(s.finalised),
+          fromIdlSeq<std::vector<GatewayId>>(s.gateways, [](GatewayId id) { return id; })};
+}
+
+RGNav::RegionInfo toIdl(const RegionView& r) {
+  RGNav::RegionInfo out;
+  out.summary = toIdl(r.summary);
+  out.lines = toIdlSeq<RGNav::Segment2DSeq>(r.lines, [](const Segment2& s) { return RGNav::Segment2D{toIdl(s.a), toIdl(s.b)}; });
+  out.boxMin = toIdl(r.boxMin);
+  out.boxMax = toIdl(r.boxMax);
+  out.freespace.resolution = r.freespace.resolutionM;
+  out.freespace.origin = toIdl(r.freespace.originM);
+  out.freespace.width = r.freespace.width;
+  out.freespace.height = r.freespace.height;
+  out.freespace.bits = toIdlSeq<RGNav::OctetSeq>(r.freespace.bytes, [](std::uint8_t b) { return CORBA::Octet(b); });
+  out.area = r.areaM2;
+  out.centroid = toIdl(r.centroid);
+  out.majorAxisAngle = r.majorAxisAngleRad;
+  out.majorVariance = r.majorVariance;
+  out.minorVariance = r.minorVariance;
+  out.mainDirections = toIdlSeq<RGNav::DirectionSeq>(
+      r.mainDirections, [](const MainDirection& d) { return RGNav::Direction{d.angleRad, d.lengthM, d.share}; });
+  out.accuracyInlierShare = r.accuracyInlierShare;
+  out.accuracyRms = r.accuracyRmsM;
+  out.completeness = r.completeness;
+  return out;
+}
+
+RegionView fromIdl(const RGNav::RegionInfo& r) {
+  RegionView out;
+  out.summary = fromIdl(r.summary);
+  out.lines = fromIdlSeq<std::vector<Segment2>>(r.lines, [](const RGNav::Segment2D& s) { return Segment2{fromIdl(s.a), fromIdl(s.b)}; });
+  out.boxMin = fromIdl(r.boxMin);
+  out.boxMax = fromIdl(r.boxMax);
+  out.freespace.resolutionM = r.freespace.resolution;
+  out.freespace.originM = fromIdl(r.freespace.origin);
+  out.freespace.width = r.freespace.width;
+  out.freespace.height = r.freespace.height;
+  out.freespace.bytes = fromIdlSeq<std::vector<std::uint8_t>>(r.freespace.bits, [](CORBA::Octet b) { return std::uint8_t(b); });
+  out.areaM2 = r.area;
+  out.centroid = fromIdl(r.centroid);
+  out.majorAxisAngleRad = r.majorAxisAngle;
+  out.majorVariance = r.majorVariance;
+  out.minorVariance = r.minorVariance;
+  out.mainDirections = fromIdlSeq<std::vector<MainDirection>>(
+      r.mainDirections, [](const RGNav::Direction& d) { return MainDirection{d.angle, d.length, d.share}; });
+  out.accuracyInlierShare = r.accuracyInlierShare;
+  out.accuracyRmsM = r.accuracyRms;
+  out.completeness = r.completeness;
+  return out;
+}
+
+RGNav::RgGateway toIdl(const GatewayView& g) {
+  RGNav::RgGateway out;
+  out.id = g.id;
+  out.detectorId = g.detectorId;
+  out.classes = toIdl(g.classes);
+  out.door = g.door;
+  out.neutralised = g.neutralised;
+  out.gatewayPoints = toIdl(g.gatewayPoints);
+  out.crossingPoints = toIdl(g.crossingPoints);
+  out.sideA = g.sideA;
+  out.sideB = g.sideB;
+  out.traversals = static_cast<CORBA::ULong>(g.traversals);
+  return out;
+}
+
+GatewayView fromIdl(const RGNav::RgGateway& g) {
+  return {g.id, g.detectorId, fromIdl(g.classes), static_cast<bool>(g.door), static_cast<bool>(g.neutralised),
+          fromIdl(g.gatewayPoints), fromIdl(g.crossingPoints), g.sideA, g.sideB, g.traversals};
+}
+
+RGNav::RgGraphInfo toIdl(const GraphView& graph) {
+  RGNav::RgGraphInfo out;
+  out.nodes = toIdlSeq<RGNav::RgNodeSeq>(graph.nodes, [](const GraphNodeView& n) { return node(n); });
+  out.edges = toIdlSeq<RGNav::RgEdgeSeq>(graph.edges, [](const GraphEdgeView& e) {
+    return RGNav::RgEdge{static_cast<CORBA::ULong>(e.from), static_cast<CORBA::ULong>(e.to), e.throughGateway,
+                         e.through, e.lengthM, e.costM};
+  });
+  return out;
+}
+
+GraphView fromIdl(const RGNav::RgGraphInfo& graph) {
+  GraphView out;
+  out.nodes = fromIdlSeq<std::vector<GraphNodeView>>(graph.nodes, [](const RGNav::RgNode& n) { return node(n); });
+  out.edges = fromIdlSeq<std::vector<GraphEdgeView>>(graph.edges, [](const RGNav::RgEdge& e) {
+    return GraphEdgeView{e.from, e.to, static_cast<bool>(e.throughGateway), e.through, e.length, e.cost};
+  });
+  return out;
+}
+
+RGNav::RgPath toIdl(const PathView& path) {
+  RGNav::RgPath out;
+  out.crossings = toIdlSeq<RGNav::RgNodeSeq>(path.crossings, [](const GraphNodeView& n) { return node(n); });
+  out.cost = path.costM;
+  out.length = path.lengthM;
+  return out;
+}
+
+PathView fromIdl(const RGNav::RgPath& path) {
+  return {fromIdlSeq<std::vector<GraphNodeView>>(path.crossings, [](const RGNav::RgNode& n) { return node(n); }),
+          path.cost, path.length};
+}
+
+RGNav::RgMapSummary toIdl(const MapSummaryView& s) {
+  return RGNav::RgMapSummary{static_cast<CORBA::ULong>(s.regions), static_cast<CORBA::ULong>(s.gateways),
+                             static_cast<CORBA::ULong>(s.neutralised), s.lastScan, s.lastEvent, s.current, s.endOfData};
+}
+
+MapSummaryView fromIdl(const RGNav::RgMapSummary& s) {
+  return {s.regions, s.gateways, s.neutralized, s.lastScan, s.lastEvent, s.current, static_cast<bool>(s.endOfData)};
+}
+
+RGNav::RgMapEventBatch toIdl(const RgMapEventBatch& b) {
+  RGNav::RgMapEventBatch out;
+  out.events = toIdlSeq<RGNav::RgMapEventSeq>(b.events, [](const RgMapEvent& e) {
+    RGNav::RgMapEvent x;
+    x.id = e.id;
+    x.kind = std::string(eventKindName(e.kind)).c_str();
+    x.region = e.region;
+    x.other = e.other;
+    x.gateway = e.gateway;
+    x.scanId = e.scanId;
+    return x;
+  });
+  out.latestId = b.latestId;
+  out.lastScan = b.lastScan;
+  out.endOfData = b.endOfData;
+  return out;
+}
+
+RgMapEventBatch fromIdl(const RGNav::RgMapEventBatch& b) {
+  RgMapEventBatch out;
+  out.events = fromIdlSeq<std::vector<RgMapEvent>>(b.events, [](const RGNav::RgMapEvent& e) {
+    const auto kind = parseEventKind(e.kind.in());
+    if (!kind) throw FormatError("RGMappingKernel::eventsSince", 0, std::string("unknown event kind ") + e.kind.in());
+    return RgMapEvent{e.id, *kind, e.region, e.other, e.gateway, e.scanId};
+  });
+  out.latestId = b.latestId;
+  out.lastScan = b.lastScan;
+  out.endOfData = b.endOfData;
+  return out;
+}
+
+}  // namespace rgnav

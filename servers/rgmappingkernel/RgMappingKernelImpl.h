@@ -1,0 +1,33 @@
+// RgMappingKernelImpl: the RGMappingKernel.idl servant: convert in, service call, convert out.
+#pragma once
+
+#include "RGMappingKernel.hh"
+#include "servers/common/ServiceServant.h"
+#include "servers/rgmappingkernel/RgMappingKernelService.h"
+
+namespace rgnav {
+
+class RgMappingKernelImpl : public ServiceServant<POA_RGNav::RGMappingKernel> {
+ public:
+  RgMappingKernelImpl(ServerRuntime& runtime, RgMappingKernelService& service, std::uint32_t maxBatch);
+
+  RGNav::RgMapSummary summary() override;
+  RGNav::RegionInfo* currentRegion() override;
+  RGNav::RegionInfo* regionById(RGNav::RegionId id) override;
+  RGNav::RegionSummarySeq* regions() override;
+  RGNav::RgGatewaySeq* gateways() override;
+  RGNav::RgGraphInfo* graph() override;
+  RGNav::RgPath* findPath(RGNav::RegionId startRegion, const RGNav::Point2D& start, RGNav::RegionId goalRegion,
+                          const RGNav::Point2D& goal) override;
+  void nameRegion(RGNav::RegionId id, const char* name) override;
+  RGNav::RegionId regionByName(const char* name) override;
+  RGNav::RegionId mergeRegions(RGNav::RegionId a, RGNav::RegionId b) override;
+  RGNav::RgMapEventBatch* eventsSince(RGNav::RgMapEventId afterId, CORBA::ULong maxCount, const char* consumer) override;
+  char* exportMap(const char* directory, const char* name, CORBA::Boolean occupancy) override;
+
+ private:
+  RgMappingKernelService& service_;
+  std::uint32_t maxBatch_;
+};
+
+}  // namespace rgnav

@@ -1,0 +1,231 @@
+// The RG Mapping Kernel module's follower, ordering and checkpoints (see RgMappingKernelService.h).
+#include "servers/rgmappingkernel/RgMappingKernelService.h"
+
+#include <algorithm>
+
+#include "core/common/AtomicFile.h"
+#include "core/rgmap/kernel/RgMapCodec.h"
+
+namespace rgnav {
+namespace {
+
+constexpr DataId kPoseChunk = 5000;  // poses asked per call when the ScanMapper revised them
+
+RgMapState loadCheckpoint(const std::string& file) {
+  const std::optional<std::string> saved = readCheckpoint(file);
+  if (!saved) return {};
+  try {
+    return deserializeRgMap(*saved);
+  } catch (const FormatError& e) {
+    throw FormatError(file, 0, e.what());
+  }
+}
+
+}  // namespace
+
+RgMappingKernelService::RgMappingKernelService(const RgMappingKernelConfig& config, const ClientSettings& settings,
+                                               const std::string& scanMapperObject, const std::string& detectionObject,
+                                               RgMappingKernelServiceOptions options, ModuleHealth& health)
+    : options_(std::move(options)),
+      scanMapper_(settings, scanMapperObject),
+      detection_(settings, detectionObject),
+      health_(health),
+      kernel_(std::make_unique<RgMappingKernel>(config, loadCheckpoint(options_.checkpointFile))),
+      follower_(health, "inputs", [this] { return followOnce(); }) {
+  checkpointedScan_ = kernel_->state().lastScanId;
+  checkpointedEvent_ = kernel_->state().events.empty() ? 0 : kernel_->state().events.back().id;
+  health_.set("resumed_after_scan", checkpointedScan_);
+  health_.set("resumed_after_gateway_event", kernel_->state().lastGatewayEventId);
+}
+
+RgMappingKernelService::~RgMappingKernelService() { stop(); }
+
+void RgMappingKernelService::start() { follower_.start(); }
+
+void RgMappingKernelService::stop() { follower_.stop(); }
+
+bool RgMappingKernelService::fetchScans() {
+  DataId after;
+  {
+    std::lock_guard lock(mutex_);
+    after = scans_.empty() ? kernel_->state().lastScanId : scans_.back().scan.id;
+  }
+  CorrectedBatch batch = scanMapper_.correctedSince(after, options_.fetchBatch);
+  reviseIfNeeded(batch.revision);
+  std::lock_guard lock(mutex_);
+  scansEnded_ = batch.scans.empty() && batch.endOfData;
+  for (CorrectedScan& s : batch.scans) scans_.push_back(std::move(s));
+  return !batch.scans.empty();
+}
+
+bool RgMappingKernelService::fetchEvents() {
+  bool any = false;
+  for (;;) {
+    GatewayEventId after;
+    {
+      std::lock_guard lock(mutex_);
+      after = events_.empty() ? kernel_->state().lastGatewayEventId : events_.back().id;
+    }
+    GatewayEventBatch batch = detection_.eventsSince(after, options_.fetchBatch);
+    std::lock_guard lock(mutex_);
+    // Every event of the scans up to batch.lastScan is in the buffer once this batch reached its end.
+    const bool complete = batch.events.empty() || batch.events.back().id >= batch.latestId;
+    if (complete) detectionLastScan_ = batch.lastScan;
+    eventsEnded_ = batch.events.empty() && batch.endOfData;
+    any = any || !batch.events.empty();
+    for (GatewayEvent& e : batch.events) events_.push_back(std::move(e));
+    if (complete) return any;
+  }
+}
+
+void RgMappingKernelService::reviseIfNeeded(std::uint64_t revision) {
+  DataId last;
+  {
+    std::lock_guard lock(mutex_);
+    if (revision == revision_) return;
+    last = kernel_->state().lastScanId;
+  }
+  std::vector<CorrectedPose> revised;
+  for (DataId first = 1; first <= last; first += kPoseChunk)
+    for (const PoseUpdate& u : scanMapper_.poses(first, std::min(last, first + kPoseChunk - 1)))
+      revised.push_back({u.id, u.corrected});
+  std::lock_guard lock(mutex_);
+  kernel_->revisePoses(revised);
+  revision_ = revision;
+  health_.add("pose_revisions");
+}
+
+Pose2D RgMappingKernelService::correctedPoseOf(DataId scan) {
+  const auto& stored = kernel_->state().scans;
+  if (const auto found = stored.find(scan); found != stored.end()) return found->second.corrected;
+  return scanMapper_.correctedPose(scan);
+}
+
+bool RgMappingKernelService::mapPending() {
+  bool fed = false;
+  const auto feedEventsUpTo = [&](DataId scan) {
+    while (!events_.empty() && events_.front().scanId <= scan) {
+      const GatewayEvent& e = events_.front();
+      kernel_->addGatewayEvent(e, correctedPoseOf(e.gateway.lastScan));
+      health_.add("gateway_events_mapped");
+      events_.pop_front();
+      fed = true;
+    }
+  };
+  while (!scans_.empty() && (scans_.front().scan.id <= detectionLastScan_ || eventsEnded_)) {
+    const CorrectedScan& s = scans_.front();
+    feedEventsUpTo(s.scan.id - 1);
+    kernel_->addScan(s.scan, s.corrected);
+    health_.add("scans_mapped");
+    const DataId id = s.scan.id;
+    scans_.pop_front();
+    feedEventsUpTo(id);
+    fed = true;
+  }
+  if (scans_.empty() && scansEnded_ && eventsEnded_) feedEventsUpTo(kernel_->state().lastScanId);
+  return fed;
+}
+
+bool RgMappingKernelService::followOnce() {
+  {
+    std::lock_guard lock(mutex_);
+    if (finished_) return false;
+  }
+  const bool scans = fetchScans();
+  const bool events = fetchEvents();
+  std::lock_guard lock(mutex_);
+  const bool fed = mapPending();
+  const RgMapEventId lastEvent = kernel_->state().events.empty() ? 0 : kernel_->state().events.back().id;
+  const bool ended = scans_.empty() && events_.empty() && scansEnded_ && eventsEnded_;
+  if (ended) finished_ = true;
+  if (ended || lastEvent != checkpointedEvent_ ||
+      kernel_->state().lastScanId >= checkpointedScan_ + options_.checkpointScans)
+    checkpoint();
+  return scans || events || fed;
+}
+
+void RgMappingKernelService::checkpoint() {
+  if (options_.checkpointFile.empty()) return;
+  try {
+    writeFileAtomically(options_.checkpointFile, serializeRgMap(kernel_->state()));
+    checkpointedScan_ = kernel_->state().lastScanId;
+    checkpointedEvent_ = kernel_->state().events.empty() ? 0 : kernel_->state().events.back().id;
+    health_.clearError("checkpoint");
+  } catch (const FileError& e) {
+    health_.setError("checkpoint", e.what());
+  }
+}
+
+MapSummaryView RgMappingKernelService::summary() {
+  std::lock_guard lock(mutex_);
+  MapSummaryView s = mapSummary(*kernel_);
+  s.endOfData = finished_;
+  return s;
+}
+
+RegionView RgMappingKernelService::currentRegion() {
+  std::lock_guard lock(mutex_);
+  if (kernel_->currentRegionId() == 0) throw NotAvailableError("no scan mapped yet");
+  return regionView(*kernel_, kernel_->currentRegionId());
+}
+
+RegionView RgMappingKernelService::region(RegionId id) {
+  std::lock_guard lock(mutex_);
+  return regionView(*kernel_, id);
+}
+
+std::vector<RegionSummaryView> RgMappingKernelService::regions() {
+  std::lock_guard lock(mutex_);
+  std::vector<RegionSummaryView> out;
+  for (const auto& [id, r] : kernel_->state().regions) out.push_back(summaryOf(r));
+  return out;
+}
+
+std::vector<GatewayView> RgMappingKernelService::gateways() {
+  std::lock_guard lock(mutex_);
+  return gatewayViews(*kernel_);
+}
+
+GraphView RgMappingKernelService::graph() {
+  std::lock_guard lock(mutex_);
+  return graphView(kernel_->graph());
+}
+
+PathView RgMappingKernelService::findPath(const RgPlace& start, const RgPlace& goal) {
+  std::lock_guard lock(mutex_);
+  return pathView(rgnav::findPath(kernel_->graph(), start, goal));
+}
+
+void RgMappingKernelService::nameRegion(RegionId id, const std::string& name) {
+  std::lock_guard lock(mutex_);
+  kernel_->nameRegion(id, name);
+  checkpoint();
+}
+
+RegionId RgMappingKernelService::regionByName(const std::string& name) {
+  std::lock_guard lock(mutex_);
+  const std::optional<RegionId> id = kernel_->regionByName(name);
+  if (!id) throw NotAvailableError("no region is named '" + name + "'");
+  return *id;
+}
+
+RegionId RgMappingKernelService::mergeRegions(RegionId a, RegionId b) {
+  std::lock_guard lock(mutex_);
+  const RegionId merged = kernel_->mergeRegions(a, b);
+  checkpoint();
+  return merged;
+}
+
+RgMapEventBatch RgMappingKernelService::eventsSince(RgMapEventId afterId, std::size_t maxCount) {
+  if (maxCount == 0) throw InvalidArgumentError("maxCount must be at least 1");
+  std::lock_guard lock(mutex_);
+  RgMapEventBatch out;
+  out.events = kernel_->eventsSince(afterId);
+  if (out.events.size() > maxCount) out.events.resize(maxCount);
+  out.latestId = kernel_->state().events.empty() ? 0 : kernel_->state().events.back().id;
+  out.lastScan = kernel_->state().lastScanId;
+  out.endOfData = finished_ && (out.events.empty() ? afterId : out.events.back().id) >= out.latestId;
+  return out;
+}
+
+}  // namespace rgnav

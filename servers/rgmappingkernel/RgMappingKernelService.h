@@ -1,0 +1,83 @@
+// RgMappingKernelService: the RG Mapping Kernel module's work behind its servant (thesis 5.2):
+// follows the ScanMapper's corrected scans and the GatewayDetection module's events by ID and
+// feeds them to the kernel core in scan order - scan s, then the events scan s caused
+// (GatewayEvent::scanId) - so that the map is the same however the modules' timing falls. When
+// the ScanMapper revises its poses (a new revision), the kernel gets the new poses of all its
+// scans. It checkpoints the map atomically after every batch that changed its structure and
+// at least every `checkpointScans` scans, and at the end; after a restart it resumes after
+// the last scan and event the checkpoint holds.
+#pragma once
+
+#include <deque>
+#include <mutex>
+#include <string>
+
+#include "clientlibs/gatewaydetection/GatewayDetectionClient.h"
+#include "clientlibs/scanmapper/ScanMapperClient.h"
+#include "core/rgmap/kernel/RgMapViews.h"
+#include "servers/common/InputFollower.h"
+
+namespace rgnav {
+
+struct RgMappingKernelServiceOptions {
+  std::string checkpointFile;         // empty: no checkpoints
+  std::uint32_t fetchBatch = 100;     // records asked from each input per call
+  std::size_t checkpointScans = 500;  // at most this many scans between checkpoints
+};
+
+class RgMappingKernelService {
+ public:
+  // Loads the checkpoint if there is one (FormatError if it is damaged: the module then fails at
+  // start and the operator decides). Does not contact other modules yet.
+  RgMappingKernelService(const RgMappingKernelConfig& config, const ClientSettings& settings,
+                         const std::string& scanMapperObject, const std::string& detectionObject,
+                         RgMappingKernelServiceOptions options, ModuleHealth& health);
+  ~RgMappingKernelService();
+
+  void start();
+  void stop();
+
+  MapSummaryView summary();
+  RegionView currentRegion();
+  RegionView region(RegionId id);
+  std::vector<RegionSummaryView> regions();
+  std::vector<GatewayView> gateways();
+  GraphView graph();
+  PathView findPath(const RgPlace& start, const RgPlace& goal);
+  void nameRegion(RegionId id, const std::string& name);
+  RegionId regionByName(const std::string& name);
+  RegionId mergeRegions(RegionId a, RegionId b);
+  RgMapEventBatch eventsSince(RgMapEventId afterId, std::size_t maxCount);
+  // Runs `write` on the kernel under the lock (exports).
+  template <class F>
+  auto withKernel(F&& write) {
+    std::lock_guard lock(mutex_);
+    return write(*kernel_);
+  }
+
+ private:
+  bool followOnce();          // false when there was nothing new
+  bool fetchScans();          // true when scans came
+  bool fetchEvents();         // true when events came
+  void reviseIfNeeded(std::uint64_t revision);
+  bool mapPending();          // under lock; true when something was fed
+  Pose2D correctedPoseOf(DataId scan);  // under lock
+  void checkpoint();          // under lock
+
+  RgMappingKernelServiceOptions options_;
+  ScanMapperClient scanMapper_;
+  GatewayDetectionClient detection_;
+  ModuleHealth& health_;
+  std::mutex mutex_;
+  std::unique_ptr<RgMappingKernel> kernel_;
+  std::deque<CorrectedScan> scans_;    // fetched, not fed yet
+  std::deque<GatewayEvent> events_;    // fetched, not fed yet
+  DataId detectionLastScan_ = 0;       // the detector has processed every scan up to this one
+  bool scansEnded_ = false, eventsEnded_ = false, finished_ = false;
+  std::uint64_t revision_ = 0;         // of the poses the kernel has
+  RgMapEventId checkpointedEvent_ = 0;
+  DataId checkpointedScan_ = 0;
+  InputFollower follower_;  // last: it stops before the rest goes
+};
+
+}  // namespace rgnav

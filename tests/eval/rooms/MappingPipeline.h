@@ -1,0 +1,74 @@
+// MappingPipeline: the mapping chain of the RG Nav server set (thesis 5.2: ScanMapper ->
+// GatewayDetection -> RG Mapping Kernel) run in one process on a stream of scans, for the room
+// evaluation (issue 7, "rgctl eval rooms"). Per scan, in ID order:
+//   1. the ScanMapper (SLAM) takes the scan with its raw odometry and gives its corrected pose;
+//   2. the kernel stacks the scan with that corrected pose;
+//   3. the GatewayDetector sees the scan with its ODOMETRY pose (as the GatewayDetection module
+//      does: its gateways are in the odometry frame), and each event it causes goes to the kernel
+//      with the corrected pose of the gateway's last scan (the kernel places it with
+//      corrected ∘ odometry⁻¹ of that scan).
+// Whenever the ScanMapper optimised its pose graph, the kernel's poses are revised (as the kernel
+// module does when the ScanMapper reports revised poses); finish() closes pending loops and
+// revises them with the final SLAM poses.
+// For measuring what SLAM errors cost, addScanAt gives the corrected pose instead (e.g. the true
+// pose): the ScanMapper is then not used at all.
+// Where it differs from the server set: no CORBA, no checkpoints, and the kernel gets each scan's
+// corrected pose as the ScanMapper has it right after that scan and revisions right after each
+// optimisation (the kernel server follows the ScanMapper with some delay, so it may see slightly
+// later estimates).
+#pragma once
+
+#include <map>
+#include <optional>
+
+#include "core/gateways/detection/GatewayDetector.h"
+#include "core/rgmap/kernel/RgMappingKernel.h"
+#include "core/slam/ScanMapper.h"
+
+namespace rgnav {
+
+struct MappingPipelineConfig {
+  SlamConfig slam;
+  GatewayDetectorConfig gateways;
+  RgMappingKernelConfig kernel;
+};
+
+struct MappingCounts {
+  std::size_t scans = 0;
+  std::size_t keyframes = 0;
+  std::size_t gatewayEvents = 0;
+  std::size_t traversals = 0;
+};
+
+class MappingPipeline {
+ public:
+  // `classifier` empty: the detector finds narrow passages only. Throws ConfigError for a bad
+  // configuration (as the parts do).
+  MappingPipeline(const MappingPipelineConfig& config, std::optional<HmmClassifier> classifier);
+
+  // The next scan; scan.odometry is its raw odometry pose. IDs must increase (InvalidArgumentError).
+  // One pipeline takes either addScan (SLAM) or addScanAt (given poses) throughout
+  // (InvalidArgumentError otherwise).
+  void addScan(const LaserScan& scan);
+  void addScanAt(const LaserScan& scan, const Pose2D& corrected);
+  // With SLAM: optimises pending loops and revises every pose the kernel holds with the final
+  // SLAM poses. With given poses: nothing to revise.
+  void finish();
+
+  // The corrected pose of a scan taken in (NotAvailableError for an unknown ID).
+  Pose2D correctedPose(DataId scanId) const;
+  const RgMappingKernel& kernel() const { return kernel_; }
+  const MappingCounts& counts() const { return counts_; }
+
+ private:
+  void map(const LaserScan& scan);
+  void reviseKernelPoses();
+
+  ScanMapper slam_;
+  std::optional<std::map<DataId, Pose2D>> given_;  // set once addScanAt was used
+  GatewayDetector detector_;
+  RgMappingKernel kernel_;
+  MappingCounts counts_;
+};
+
+}  // namespace rgnav

@@ -1,0 +1,22 @@
+// regionPixels: the regions of a final RG Map as segments of the floor plan for the room scoring
+// (RoomScoring.h): each region's 1-bit freespace (15 cm cells, region frame) placed into the world
+// frame with its frame pose and mapToWorld, sampled at the floor plan's pixel centres
+// (rasteriseFreespace, thesis 2.3.2: a global metric map extracted on demand) and kept only on the
+// world's free pixels: the pixels a segmentation of the furnished floor plan can label, as the
+// benchmark's segmentations do (a 15 cm cell straddling a wall is free only on its free side).
+#pragma once
+
+#include <vector>
+
+#include "core/common/Pose2D.h"
+#include "core/sim/OccupancyGrid.h"
+#include "tests/eval/rooms/FinalMap.h"
+#include "tests/eval/rooms/RoomScoring.h"
+
+namespace rgnav {
+
+// One segment per region, ID = region ID, pixel indices row * width + col of `world` (row 0 at
+// the bottom, as GroundTruth::labels).
+std::vector<SegmentPixels> regionPixels(const FinalMap& map, const Pose2D& mapToWorld, const OccupancyGrid& world);
+
+}  // namespace rgnav

@@ -1,0 +1,188 @@
+// rgnav-eval-rooms: the room evaluation of issue 7 ("rgctl eval rooms") on furnished IPA floor
+// plans X_furnitures.png (floorplans/SOURCES.md). For each map the simulator drives the room tour
+// through every ground-truth room and the scans are mapped in process (MappingRun.h: SLAM ->
+// gateway detection -> RG Mapping Kernel, poses revised after every SLAM optimisation and at the
+// end); the final regions' freespace is placed into the floor plan (RegionPixels.h) and scored
+// against the ground-truth rooms with the benchmark's metric (RoomScoring.h). Prints a row per map
+// with a line of where it loses (ScoreBreakdown.h) and, last,
+//   rooms: maps=… recall_mean=… precision_mean=… recall_pooled=… precision_pooled=…
+// where the means are over the maps' means and the pooled figures sum pixels over all maps. A
+// picture per map goes to --out (DebugImage.h; --region-pictures: one per region too); --list
+// prints every room, region and gateway (Listing.h). Trained HMMs (--models, if the file exists)
+// add hallway gateways to the narrow passages. The detector and kernel options default to the
+// modules' defaults (what the server set runs); --true-poses replaces SLAM by the true poses.
+// Where it differs from the issue: the issue maps with the full server set online; this program
+// runs the same chain in process (FinalMap.h is the seam where a server-set run plugs in).
+#include <chrono>
+#include <cstdio>
+#include <filesystem>
+#include <iostream>
+#include <sstream>
+
+#include "core/gateways/classify/HmmModelFile.h"
+#include "core/sim/LoadedWorld.h"
+#include "core/sim/SimulationConfigYaml.h"
+#include "tests/eval/rooms/DebugImage.h"
+#include "tests/eval/rooms/Listing.h"
+#include "tests/eval/rooms/MappingRun.h"
+#include "tests/eval/rooms/RegionPixels.h"
+#include "tests/eval/rooms/RoomScoring.h"
+#include "tests/eval/rooms/ScoreBreakdown.h"
+#include "tools/common/CommandLine.h"
+
+namespace po = boost::program_options;
+using namespace rgnav;
+
+namespace {
+
+struct Options {
+  MappingRunSetup setup;
+  std::string simConfig;
+  std::string models = "config/gateways/gateway-hmms.txt";
+  std::string outDir = "out/rooms";
+  bool list = false;
+  bool regionPictures = false;
+};
+
+struct Totals {
+  std::size_t maps = 0, scans = 0;
+  double recallMeans = 0.0, precisionMeans = 0.0, mappingSeconds = 0.0;
+  std::size_t roomOverlap = 0, roomPixels = 0, segmentOverlap = 0, segmentPixels = 0;
+};
+
+double ratio(std::size_t a, std::size_t b) { return b == 0 ? 0.0 : double(a) / double(b); }
+
+// A default value for --help as a person writes it (2.2, not 2.2000000000000002).
+std::string shown(double value) {
+  std::ostringstream text;
+  text << value;
+  return text.str();
+}
+
+void evaluate(const std::string& mapPath, const Options& options, const std::optional<HmmClassifier>& classifier,
+              Totals& totals) {
+  const auto started = std::chrono::steady_clock::now();
+  const LoadedWorld world = loadWorld(mapPath);
+  const IpaFiles files = ipaFilesOf(mapPath);
+  if (!world.truth) throw FileError(mapPath + ": no ground-truth rooms beside it (" + files.truth + ")");
+  const MappingRun run = mapRoomTour(world.grid, *world.truth, options.setup, classifier);
+  const std::vector<SegmentPixels> regions = regionPixels(run.map, run.mapToWorld, world.grid);
+  const RoomScore score = scoreRooms(*world.truth, regions);
+  const ScoreBreakdown losses = breakDownScore(*world.truth, world.grid, regions, score, run.unreachableRooms);
+  writeRoomImage(options.outDir + "/" + files.name + "_rooms.png", world.grid, *world.truth, run.map, run.mapToWorld,
+                 regions);
+  if (options.regionPictures)
+    for (const SegmentPixels& region : regions) {
+      std::vector<Eigen::Vector2d> positions;
+      for (const DataId id : run.regionScans.at(region.id)) positions.push_back(run.truePath[id - 1]);
+      writeRegionImage(options.outDir + "/" + files.name + "_region" + std::to_string(region.id) + ".png", world.grid,
+                       *world.truth, run.map, run.mapToWorld, region, positions);
+    }
+  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
+  const std::size_t scans = run.counts.scans;
+  std::printf("%-26s %5d %7zu %8zu %11zu %6zu %7.0f | %6.3f %9.3f %7.3f %9.3f | %3zu/%-3zu %4.2f/%-4.2f %5.0fs\n",
+              files.name.c_str(), world.truth->roomCount, run.map.summary.regions, run.map.summary.gateways,
+              run.map.summary.neutralised, scans, double(scans) / std::max(run.mappingSeconds, 1e-9),
+              score.recallMean(), score.precisionMean(), ratio(score.roomOverlapSum(), score.roomPixelSum()),
+              ratio(score.segmentOverlapSum(), score.segmentPixelSum()), run.tour.roomsVisited.size(),
+              run.tour.roomsVisited.size() + run.tour.roomsMissed.size(),
+              run.poseErrors.meanM, run.poseErrors.maxM, seconds);
+  std::printf("#   losses: recall ceiling %.3f covered %.3f best %.3f | precision pixels off-room %.3f leaked %.3f "
+              "merged %.3f\n", losses.ceilingMean, losses.coveredMean, score.recallMean(), losses.offRoomShare,
+              losses.leakedShare, losses.mergedShare);
+  if (options.list) printListing(score, *world.truth, run);
+  std::fflush(stdout);
+  ++totals.maps;
+  totals.scans += scans;
+  totals.mappingSeconds += run.mappingSeconds;
+  totals.recallMeans += score.recallMean();
+  totals.precisionMeans += score.precisionMean();
+  totals.roomOverlap += score.roomOverlapSum();
+  totals.roomPixels += score.roomPixelSum();
+  totals.segmentOverlap += score.segmentOverlapSum();
+  totals.segmentPixels += score.segmentPixelSum();
+}
+
+void printHeader(bool hallways, bool truePoses) {
+  std::printf("# room tour in the simulator -> ScanMapper (odometry-noised scans) -> GatewayDetector (%s)\n"
+              "# -> RG Mapping Kernel, poses revised after SLAM optimisations and at the end; region freespace\n"
+              "# on the floor plan's free pixels vs. the GT rooms (benchmark metric: per-room recall, per-region\n"
+              "# precision, regions <= 100 px dropped). tour: rooms visited/planned; pose_m: mean/max distance of\n"
+              "# the final corrected positions from the true ones (map frame aligned at the first scan); losses:\n"
+              "# mean room shares (ceiling: free in the furnished map and reachable, covered by any region, best\n"
+              "# region) and shares of region pixels outside their best room (ScoreBreakdown.h)%s\n",
+              hallways ? "narrow passages + hallway gateways" : "narrow passages only, no HMM file",
+              truePoses ? "\n# TRUE POSES: the kernel gets the true pose of every scan, SLAM is not run" : "");
+  std::printf("%-26s %5s %7s %8s %11s %6s %7s | %6s %9s %7s %9s | %7s %9s %5s\n", "map", "rooms", "regions",
+              "gateways", "neutralised", "scans", "scans/s", "recall", "precision", "rec_px", "prec_px", "tour",
+              "pose_m", "time");
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  std::vector<std::string> maps;
+  Options options;
+  NarrowPassageConfig& passages = options.setup.pipeline.gateways.passages;
+  po::options_description desc("rgnav-eval-rooms <X_furnitures.png>... [options]");
+  desc.add_options()
+      ("help", "this text")
+      ("map", po::value(&maps)->required()->multitoken(), "furnished IPA floor plans (X_furnitures.png)")
+      ("out", po::value(&options.outDir)->default_value(options.outDir), "folder for <map>_rooms.png")
+      ("list", po::bool_switch(&options.list), "print every room, region and gateway with its match")
+      ("region-pictures", po::bool_switch(&options.regionPictures),
+       "also write <map>_region<N>.png per region, with its scans' true positions")
+      ("models", po::value(&options.models)->default_value(options.models),
+       "trained HMM file; used if it exists (else narrow passages only)")
+      ("hallway-width", po::value(&options.setup.pipeline.gateways.hallways.hypotheses.hallwayWidthM)
+           ->default_value(options.setup.pipeline.gateways.hallways.hypotheses.hallwayWidthM, shown(options.setup.pipeline.gateways.hallways.hypotheses.hallwayWidthM)),
+       "expected hallway width d_hw in m (hallway gateways)")
+      ("max-door-width", po::value(&passages.maxDoorWidthM)->default_value(passages.maxDoorWidthM, shown(passages.maxDoorWidthM)),
+       "narrow passages: D_lr^max in m")
+      ("min-jamb", po::value(&passages.minJambLengthM)->default_value(passages.minJambLengthM, shown(passages.minJambLengthM)),
+       "narrow passages: shortest surface a gateway point bounds, m")
+      ("min-support", po::value(&options.setup.pipeline.gateways.passageTracking.minSupport)
+           ->default_value(options.setup.pipeline.gateways.passageTracking.minSupport),
+       "narrow passages: scans before a tracked passage is a gateway")
+      ("association", po::value(&options.setup.pipeline.gateways.passageTracking.associationDistanceM)
+           ->default_value(options.setup.pipeline.gateways.passageTracking.associationDistanceM, shown(options.setup.pipeline.gateways.passageTracking.associationDistanceM)),
+       "narrow passages: largest gateway-point distance of a hypothesis to its track, m")
+      ("side-range", po::value(&options.setup.pipeline.kernel.sides.rangeM)
+           ->default_value(options.setup.pipeline.kernel.sides.rangeM, shown(options.setup.pipeline.kernel.sides.rangeM)),
+       "kernel: farthest robot distance from a crossing point that decides its side, m")
+      ("sim-config", po::value(&options.simConfig), "simulator parameters (config/sim/*.yaml); default: built-in")
+      ("seed", po::value(&options.setup.simulation.seed)->default_value(options.setup.simulation.seed),
+       "simulation seed")
+      ("true-poses", po::bool_switch(&options.setup.truePoses),
+       "the kernel gets the true pose of every scan instead of SLAM's (what SLAM errors cost)")
+      ("max-tour-s", po::value(&options.setup.maxTourSeconds)->default_value(options.setup.maxTourSeconds, shown(options.setup.maxTourSeconds)),
+       "end each tour after this many simulated seconds (smoke runs)");
+  po::positional_options_description positional;
+  positional.add("map", -1);
+  try {
+    if (!parseCommandLine(argc, argv, desc, positional)) return 0;
+    if (!options.simConfig.empty()) {
+      const std::uint64_t seed = options.setup.simulation.seed;
+      options.setup.simulation = loadSimulationConfig(options.simConfig);
+      options.setup.simulation.seed = seed;
+    }
+    std::optional<HmmClassifier> classifier;
+    if (std::filesystem::exists(options.models)) classifier = loadHmmModels(options.models);
+    std::filesystem::create_directories(options.outDir);
+    printHeader(classifier.has_value(), options.setup.truePoses);
+    Totals totals;
+    for (const std::string& map : maps) evaluate(map, options, classifier, totals);
+    const auto n = double(std::max<std::size_t>(totals.maps, 1));
+    std::printf("# scans=%zu mapping scans/s=%.0f\n", totals.scans,
+                double(totals.scans) / std::max(totals.mappingSeconds, 1e-9));
+    std::printf("rooms: maps=%zu recall_mean=%.3f precision_mean=%.3f recall_pooled=%.3f precision_pooled=%.3f\n",
+                totals.maps, totals.recallMeans / n, totals.precisionMeans / n,
+                ratio(totals.roomOverlap, totals.roomPixels), ratio(totals.segmentOverlap, totals.segmentPixels));
+    return 0;
+  } catch (const po::error& e) {
+    std::cerr << "rgnav-eval-rooms: " << e.what() << "\n" << desc << std::endl;
+  } catch (const std::exception& e) {
+    std::cerr << "rgnav-eval-rooms: " << e.what() << std::endl;
+  }
+  return 2;
+}

@@ -1,0 +1,31 @@
+// FaultSchedule: the faults of a fault-injection run: `kills` SIGKILLs and `stops` SIGSTOPs in a
+// seeded order, spread evenly over `spanSeconds`, each dealt to the next of `targets` in turn
+// (round robin) while it runs; omniNames is SIGKILLed once half way. After every fault it waits
+// until the watchdog has the module running again under a new PID and records how long that took.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "tests/support/cluster/TestCluster.h"
+
+namespace rgnav::testing {
+
+struct FaultPlan {
+  std::vector<std::string> targets;
+  int kills = 0;
+  int stops = 0;
+  double spanSeconds = 0.0;
+  unsigned seed = 7;
+};
+
+struct FaultRecord {
+  int kills = 0, stops = 0, recovered = 0, namingRestarts = 0;
+  std::vector<double> recoverySeconds;
+};
+
+FaultRecord injectFaults(TestCluster& cluster, const FaultPlan& plan);
+
+bool isRunning(const ModuleProcessInfo& m);
+
+}  // namespace rgnav::testing

@@ -1,0 +1,126 @@
+// The RG Mapping Kernel module through the real server set on the Intel log (playback ->
+// ScanMapper -> GatewayDetection -> kernel): the map ends structurally consistent (references
+// both ways, a gateway joins at most two regions, neutralised exactly when both sides are the same
+// region, no empty region), regions and paths are served, naming and merging work, the exported
+// files exist, and a restart by the operator resumes from the checkpoint with the same map.
+#include <cppunit/extensions/HelperMacros.h>
+
+#include <cstdlib>
+#include <filesystem>
+#include <map>
+#include <set>
+#include <thread>
+
+#include "clientlibs/rgmappingkernel/RgMappingKernelClient.h"
+#include "tests/integration/IntegrationHelpers.h"
+
+using namespace rgnav;
+using namespace rgnav::testing;
+
+namespace {
+
+MapSummaryView waitForEnd(RgMappingKernelClient& kernel) {
+  for (int i = 0; i < 6000; ++i) {
+    const MapSummaryView s = kernel.summary();
+    if (s.endOfData) return s;
+    std::this_thread::sleep_for(std::chrono::milliseconds(50));
+  }
+  throw std::runtime_error("the map was not finished within 5 minutes");
+}
+
+// Every structural invariant of the issue, checked on what the module serves.
+void checkInvariants(const std::vector<RegionSummaryView>& regions, const std::vector<GatewayView>& gateways) {
+  std::map<RegionId, std::set<GatewayId>> byRegion;
+  for (const RegionSummaryView& r : regions) {
+    CPPUNIT_ASSERT_MESSAGE("empty region " + std::to_string(r.id), r.scans > 0);
+    byRegion[r.id] = std::set<GatewayId>(r.gateways.begin(), r.gateways.end());
+  }
+  for (const GatewayView& g : gateways) {
+    for (const RegionId side : {g.sideA, g.sideB}) {
+      if (side == 0) continue;
+      CPPUNIT_ASSERT_MESSAGE("gateway " + std::to_string(g.id) + " names unknown region", byRegion.count(side) == 1);
+      CPPUNIT_ASSERT_MESSAGE("region does not list gateway " + std::to_string(g.id), byRegion[side].count(g.id) == 1);
+    }
+    CPPUNIT_ASSERT_EQUAL(g.sideA != 0 && g.sideA == g.sideB, g.neutralised);
+  }
+  for (const auto& [region, listed] : byRegion)
+    for (const GatewayId id : listed) {
+      const auto g = std::find_if(gateways.begin(), gateways.end(), [&](const GatewayView& v) { return v.id == id; });
+      CPPUNIT_ASSERT(g != gateways.end());
+      CPPUNIT_ASSERT(g->sideA == region || g->sideB == region);
+    }
+}
+
+}  // namespace
+
+class RgMappingKernelIntegrationTest : public CppUnit::TestFixture {
+  CPPUNIT_TEST_SUITE(RgMappingKernelIntegrationTest);
+  CPPUNIT_TEST(testIntelMapQueriesExportAndResume);
+  CPPUNIT_TEST_SUITE_END();
+
+ public:
+  void testIntelMapQueriesExportAndResume() {
+    const std::string models = std::string(std::getenv("RGNAV_ROOT")) + "/config/gateways/gateway-hmms.txt";
+    TestCluster cluster({{"LogPlayback", playbackCommand(intelLog()), {"Laser", "Base"}},
+                         {"ScanMapper", {TestCluster::program("rgnav-scanmapper")}, {"ScanMapper"}, {"LogPlayback"}},
+                         {"GatewayDetection",
+                          {TestCluster::program("rgnav-gatewaydetection"), "--models", models},
+                          {"GatewayDetection"},
+                          {"LogPlayback"}},
+                         {"RGMappingKernel",
+                          {TestCluster::program("rgnav-rgmappingkernel")},
+                          {"RGMappingKernel"},
+                          {"ScanMapper", "GatewayDetection"}}},
+                        kFastBackoff);
+    cluster.start();
+    RgMappingKernelClient kernel(cluster.clientSettings());
+    const MapSummaryView summary = waitForEnd(kernel);
+    CPPUNIT_ASSERT_EQUAL(DataId(kIntelScans), summary.lastScan);
+    CPPUNIT_ASSERT(summary.regions >= 3);
+    CPPUNIT_ASSERT(summary.gateways >= 3);
+
+    const std::vector<RegionSummaryView> regions = kernel.regions();
+    const std::vector<GatewayView> gateways = kernel.gateways();
+    CPPUNIT_ASSERT_EQUAL(summary.regions, regions.size());
+    checkInvariants(regions, gateways);
+
+    const RegionView first = kernel.region(regions.front().id);
+    CPPUNIT_ASSERT(!first.lines.empty());
+    CPPUNIT_ASSERT(first.areaM2 > 1.0);
+    CPPUNIT_ASSERT(first.freespace.width > 0 && !first.freespace.bytes.empty());
+    CPPUNIT_ASSERT_EQUAL(summary.current, kernel.currentRegion().summary.id);
+    CPPUNIT_ASSERT_THROW(kernel.region(100000), NotAvailableError);
+
+    // A path between two regions joined by a gateway.
+    const GatewayView joined = *std::find_if(gateways.begin(), gateways.end(), [](const GatewayView& g) {
+      return g.sideA != 0 && g.sideB != 0 && !g.neutralised;
+    });
+    const PathView path = kernel.findPath(joined.sideA, joined.crossingPoints[0], joined.sideB, joined.crossingPoints[1]);
+    CPPUNIT_ASSERT(path.lengthM > 0.0 && path.costM >= path.lengthM - 1e-9);
+    CPPUNIT_ASSERT(!kernel.graph().nodes.empty());
+
+    kernel.nameRegion(joined.sideA, "start room");
+    CPPUNIT_ASSERT_EQUAL(joined.sideA, kernel.regionByName("start room"));
+    CPPUNIT_ASSERT_THROW(kernel.regionByName("nowhere"), NotAvailableError);
+    CPPUNIT_ASSERT_THROW(kernel.mergeRegions(joined.sideA, joined.sideA), InvalidArgumentError);
+
+    const std::string files = kernel.exportMap(cluster.dir() + "/out", "intel", true);
+    for (const char* suffix : {"intel.rgmap.json", "intel.rgmap.svg", "intel.rgmap.png", "intel.pgm", "intel.yaml"})
+      CPPUNIT_ASSERT_MESSAGE(suffix, std::filesystem::exists(cluster.dir() + "/out/" + suffix));
+
+    const RgMapEventBatch events = kernel.eventsSince(0, 100000);
+    for (std::size_t i = 0; i < events.events.size(); ++i) CPPUNIT_ASSERT_EQUAL(RgMapEventId(i + 1), events.events[i].id);
+
+    const auto old = cluster.describe("RGMappingKernel");
+    cluster.watchdog().restartModule("RGMappingKernel");
+    cluster.waitFor("RGMappingKernel", runningAgainAfter(old.pid), "restarted");
+    const MapSummaryView resumed = waitForEnd(kernel);
+    CPPUNIT_ASSERT(resumed == kernel.summary());
+    CPPUNIT_ASSERT_EQUAL(summary.regions, resumed.regions);
+    CPPUNIT_ASSERT_EQUAL(summary.gateways, resumed.gateways);
+    CPPUNIT_ASSERT(kernel.gateways() == gateways);
+    CPPUNIT_ASSERT_EQUAL(joined.sideA, kernel.regionByName("start room"));
+  }
+};
+
+CPPUNIT_TEST_SUITE_REGISTRATION(RgMappingKernelIntegrationTest);

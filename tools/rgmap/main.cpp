@@ -1,0 +1,146 @@
+// rgnav-rgmap: talks to the RG Mapping Kernel module of a running set.
+//   rgnav-rgmap build --label demo --out out --name demo
+//       follows the map while it is built (a progress line on stderr), waits for the end of the
+//       inputs, exports <out>/<name>.rgmap.json/.svg/.png and prints
+//       "<label>: scans=… regions=… gateways=… neutralized=… scans_per_s=…"
+//   rgnav-rgmap regions | gateways | events
+//   rgnav-rgmap name <region> <name> | merge <a> <b> | path <region> <x> <y> <region> <x> <y>
+//   rgnav-rgmap export <dir> <name> [--occupancy]
+#include <chrono>
+#include <cstdio>
+#include <iostream>
+#include <thread>
+
+#include "clientlibs/rgmappingkernel/RgMappingKernelClient.h"
+#include "core/common/Errors.h"
+#include "tools/common/CommandLine.h"
+
+namespace po = boost::program_options;
+using namespace rgnav;
+
+namespace {
+
+double secondsSince(std::chrono::steady_clock::time_point start) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+int build(RgMappingKernelClient& kernel, const std::string& label, const std::string& out, const std::string& name,
+          bool occupancy, bool progress) {
+  const auto start = std::chrono::steady_clock::now();
+  MapSummaryView s = kernel.summary();
+  const DataId first = s.lastScan;
+  while (!s.endOfData) {
+    std::this_thread::sleep_for(std::chrono::milliseconds(200));
+    s = kernel.summary();
+    if (progress) {
+      const double rate = double(s.lastScan - first) / std::max(secondsSince(start), 1e-3);
+      std::fprintf(stderr, "\r%s: mapping scan %llu (%.0f scans/s), region %llu, %zu regions, %zu gateways   ",
+                   label.c_str(), static_cast<unsigned long long>(s.lastScan), rate,
+                   static_cast<unsigned long long>(s.current), s.regions, s.gateways);
+    }
+  }
+  const double seconds = secondsSince(start);
+  if (progress) std::fprintf(stderr, "\n");
+  std::cout << kernel.exportMap(out, name, occupancy);
+  std::printf("%s: scans=%llu regions=%zu gateways=%zu neutralized=%zu scans_per_s=%.1f\n", label.c_str(),
+              static_cast<unsigned long long>(s.lastScan), s.regions, s.gateways, s.neutralised,
+              double(s.lastScan - first) / std::max(seconds, 1e-3));
+  return 0;
+}
+
+void printRegions(RgMappingKernelClient& kernel) {
+  for (const RegionSummaryView& r : kernel.regions()) {
+    std::printf("region %llu%s%s frame=%.2f,%.2f,%.3f scans=%zu gateways=%zu%s\n", static_cast<unsigned long long>(r.id),
+                r.name.empty() ? "" : " ", r.name.c_str(), r.frame.x, r.frame.y, r.frame.theta, r.scans,
+                r.gateways.size(), r.finalised ? "" : " (current)");
+  }
+}
+
+void printGateways(RgMappingKernelClient& kernel) {
+  for (const GatewayView& g : kernel.gateways()) {
+    std::printf("gateway %llu %s p=%.2f regions=%llu|%llu%s traversals=%zu\n", static_cast<unsigned long long>(g.id),
+                g.classes.front().name.c_str(), g.classes.front().probability, static_cast<unsigned long long>(g.sideA),
+                static_cast<unsigned long long>(g.sideB), g.neutralised ? " neutralised" : "", g.traversals);
+  }
+}
+
+void printEvents(RgMappingKernelClient& kernel) {
+  for (RgMapEventId after = 0;;) {
+    const RgMapEventBatch batch = kernel.eventsSince(after, 500);
+    for (const RgMapEvent& e : batch.events) {
+      std::printf("event %llu %s region=%llu other=%llu gateway=%llu scan=%llu\n", static_cast<unsigned long long>(e.id),
+                  std::string(eventKindName(e.kind)).c_str(), static_cast<unsigned long long>(e.region),
+                  static_cast<unsigned long long>(e.other), static_cast<unsigned long long>(e.gateway),
+                  static_cast<unsigned long long>(e.scanId));
+      after = e.id;
+    }
+    if (batch.events.empty()) return;
+  }
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  std::string command, naming, robot, label, out, name;
+  std::vector<std::string> args;
+  bool occupancy = false, quiet = false;
+  po::options_description desc("rgnav-rgmap <build|regions|gateways|events|name|merge|path|export> [args] [options]");
+  desc.add_options()
+      ("help", "this text")
+      ("command", po::value(&command)->required(), "what to do")
+      ("args", po::value(&args)->multitoken(), "the command's arguments")
+      ("naming", po::value(&naming)->default_value(""), "naming service host:port (default: RGNAV_NAMING)")
+      ("robot", po::value(&robot)->default_value(""), "robot name (default: RGNAV_ROBOT or tumbot)")
+      ("label", po::value(&label)->default_value("map"), "build: the summary line's first word")
+      ("out", po::value(&out)->default_value("out"), "build: directory of the exported files")
+      ("name", po::value(&name)->default_value("map"), "build: name of the exported files")
+      ("occupancy", po::bool_switch(&occupancy), "also export the global metric map (PGM + YAML)")
+      ("quiet", po::bool_switch(&quiet), "build: no progress line");
+  po::positional_options_description positional;
+  positional.add("command", 1).add("args", -1);
+  try {
+    if (!parseCommandLine(argc, argv, desc, positional)) return 0;
+    ClientSettings settings = ClientSettings::fromEnvironment();
+    if (!naming.empty()) settings.setNaming(naming);
+    if (!robot.empty()) settings.robot = robot;
+    settings.retryBudget = std::chrono::seconds(30);
+    RgMappingKernelClient kernel(settings);
+    const auto want = [&](std::size_t n) {
+      if (args.size() != n) throw InvalidArgumentError(command + " wants " + std::to_string(n) + " arguments");
+    };
+    if (command == "build") return build(kernel, label, out, name, occupancy, !quiet);
+    if (command == "regions") {
+      printRegions(kernel);
+    } else if (command == "gateways") {
+      printGateways(kernel);
+    } else if (command == "events") {
+      printEvents(kernel);
+    } else if (command == "name") {
+      want(2);
+      kernel.nameRegion(std::stoull(args[0]), args[1]);
+    } else if (command == "merge") {
+      want(2);
+      std::printf("merged into region %llu\n",
+                  static_cast<unsigned long long>(kernel.mergeRegions(std::stoull(args[0]), std::stoull(args[1]))));
+    } else if (command == "path") {
+      want(6);
+      const PathView path = kernel.findPath(std::stoull(args[0]), {std::stod(args[1]), std::stod(args[2])},
+                                            std::stoull(args[3]), {std::stod(args[4]), std::stod(args[5])});
+      for (const GraphNodeView& n : path.crossings)
+        std::printf("crossing gateway=%llu side=%zu region=%llu at=%.2f,%.2f\n", static_cast<unsigned long long>(n.gateway),
+                    n.side, static_cast<unsigned long long>(n.region), n.position.x(), n.position.y());
+      std::printf("path: cost=%.2f length=%.2f\n", path.costM, path.lengthM);
+    } else if (command == "export") {
+      want(2);
+      std::cout << kernel.exportMap(args[0], args[1], occupancy);
+    } else {
+      throw InvalidArgumentError("unknown command '" + command + "'");
+    }
+    return 0;
+  } catch (const po::error& e) {
+    std::cerr << "rgnav-rgmap: " << e.what() << "\n" << desc << std::endl;
+  } catch (const std::exception& e) {
+    std::cerr << "rgnav-rgmap: " << e.what() << std::endl;
+  }
+  return 2;
+}
