@@ -8,6 +8,9 @@
 #include <random>
 #include <thread>
 
+#include "core/logs/OpenLog.h"
+#include "core/logs/ReplayMode.h"
+
 namespace rgnav::testing {
 
 using Clock = std::chrono::steady_clock;
@@ -41,6 +44,17 @@ FaultRecord injectFaults(TestCluster& cluster, const FaultPlan& plan) {
     ++record.recovered;
   }
   return record;
+}
+
+double replayDuration(const std::string& log, const std::string& speed) {
+  auto source = openLog(log);
+  double first = -1, last = 0;
+  while (auto record = source->next())
+    if (const auto* scan = std::get_if<LaserScan>(&*record)) {
+      if (first < 0) first = scan->stamp;
+      last = scan->stamp;
+    }
+  return (last - first) / parseReplayMode(speed).speed;
 }
 
 }  // namespace rgnav::testing

@@ -1,4 +1,4 @@
-// FaultSchedule: the faults of a fault-injection run: `kills` SIGKILLs and `stops` SIGSTOPs in a
+// FaultSchedule: how long a log's replay takes, and the faults of a fault-injection run: `kills` SIGKILLs and `stops` SIGSTOPs in a
 // seeded order, spread evenly over `spanSeconds`, each dealt to the next of `targets` in turn
 // (round robin) while it runs; omniNames is SIGKILLed once half way. After every fault it waits
 // until the watchdog has the module running again under a new PID and records how long that took.
@@ -25,6 +25,9 @@ struct FaultRecord {
 };
 
 FaultRecord injectFaults(TestCluster& cluster, const FaultPlan& plan);
+
+// Seconds from the log's first to its last scan, divided by the replay speed ("x60", "realtime").
+double replayDuration(const std::string& log, const std::string& speed);
 
 bool isRunning(const ModuleProcessInfo& m);
 

@@ -16,7 +16,6 @@
 
 #include "clientlibs/rgmappingkernel/RgMappingKernelClient.h"
 #include "core/logs/OpenLog.h"
-#include "core/logs/ReplayMode.h"
 #include "tests/fault/FaultSchedule.h"
 #include "tests/support/Statistics.h"
 #include "tools/common/CommandLine.h"
@@ -36,17 +35,6 @@ struct Options {
   unsigned seed = 7;
   double toleranceM = 0.01;
 };
-
-double logSeconds(const std::string& path) {
-  auto source = openLog(path);
-  double first = -1, last = 0;
-  while (auto record = source->next())
-    if (const auto* scan = std::get_if<LaserScan>(&*record)) {
-      if (first < 0) first = scan->stamp;
-      last = scan->stamp;
-    }
-  return last - first;
-}
 
 std::vector<ClusterModule> mappingSet(const Options& options) {
   return {{"LogPlayback",
@@ -135,7 +123,7 @@ int main(int argc, char** argv) {
        "largest allowed difference of a pose or position to the fault-free map");
   try {
     if (!parseCommandLine(argc, argv, desc)) return 0;
-    const double replaySeconds = logSeconds(options.log) / parseReplayMode(options.speed).speed;
+    const double replaySeconds = replayDuration(options.log, options.speed);
     const std::string fastBackoff = "defaults: {backoff_initial_s: 0.05, backoff_max_s: 0.4}";
 
     json reference;

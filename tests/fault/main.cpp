@@ -22,7 +22,6 @@
 #include "clientlibs/scanmapper/ScanMapperClient.h"
 #include "core/logs/OpenLog.h"
 #include "core/slam/ScanMapper.h"
-#include "core/logs/ReplayMode.h"
 #include "tests/fault/FaultSchedule.h"
 #include "tests/support/cluster/TestCluster.h"
 #include "watchdog/Spawn.h"
@@ -52,17 +51,6 @@ std::size_t scansInLog(const std::string& path) {
   std::size_t scans = 0;
   while (auto record = source->next()) scans += std::holds_alternative<LaserScan>(*record);
   return scans;
-}
-
-double logSeconds(const std::string& path) {
-  auto source = openLog(path);
-  double first = -1, last = 0;
-  while (auto record = source->next())
-    if (const auto* scan = std::get_if<LaserScan>(&*record)) {
-      if (first < 0) first = scan->stamp;
-      last = scan->stamp;
-    }
-  return last - first;
 }
 
 // IDs the consumer recorded, in arrival order.
@@ -128,7 +116,7 @@ int main(int argc, char** argv) {
     const bool mapping = options.target == "ScanMapper";
     if (!mapping && options.target != "LogPlayback") throw InvalidArgumentError("--target is LogPlayback or ScanMapper");
     const std::size_t expected = scansInLog(options.log);
-    const double replaySeconds = logSeconds(options.log) / parseReplayMode(options.speed).speed;
+    const double replaySeconds = replayDuration(options.log, options.speed);
     std::vector<std::string> playback{TestCluster::program("rgnav-carmen-playback"), "--log", options.log, "--speed",
                                       options.speed};
     if (!options.corrected.empty()) playback.insert(playback.end(), {"--corrected", options.corrected});
