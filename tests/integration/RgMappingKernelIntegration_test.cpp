@@ -1,8 +1,9 @@
-// The RG Mapping Kernel module through the real server set on the Intel log (playback ->
-// ScanMapper -> GatewayDetection -> kernel): the map ends structurally consistent (references
-// both ways, a gateway joins at most two regions, neutralised exactly when both sides are the same
-// region, no empty region), regions and paths are served, naming and merging work, the exported
-// files exist, and a restart by the operator resumes from the checkpoint with the same map.
+// The RG Mapping Kernel module through the real server set (playback -> ScanMapper ->
+// GatewayDetection -> kernel): the maps of the Intel, Freiburg 079 and Freiburg 101 logs end
+// structurally consistent (references both ways, a gateway joins at most two regions, neutralised
+// exactly when both sides are the same region, no empty region); on Intel, regions and paths are
+// served, naming and merging work, the exported files exist, and a restart by the operator
+// resumes from the checkpoint with the same map.
 #include <cppunit/extensions/HelperMacros.h>
 
 #include <cstdlib>
@@ -18,6 +19,20 @@ using namespace rgnav;
 using namespace rgnav::testing;
 
 namespace {
+
+std::vector<ClusterModule> mappingSet(const std::string& log) {
+  const std::string models = std::string(std::getenv("RGNAV_ROOT")) + "/config/gateways/gateway-hmms.txt";
+  return {{"LogPlayback", playbackCommand(log), {"Laser", "Base"}},
+          {"ScanMapper", {TestCluster::program("rgnav-scanmapper")}, {"ScanMapper"}, {"LogPlayback"}},
+          {"GatewayDetection",
+           {TestCluster::program("rgnav-gatewaydetection"), "--models", models},
+           {"GatewayDetection"},
+           {"LogPlayback"}},
+          {"RGMappingKernel",
+           {TestCluster::program("rgnav-rgmappingkernel")},
+           {"RGMappingKernel"},
+           {"ScanMapper", "GatewayDetection"}}};
+}
 
 MapSummaryView waitForEnd(RgMappingKernelClient& kernel) {
   for (int i = 0; i < 6000; ++i) {
@@ -56,22 +71,12 @@ void checkInvariants(const std::vector<RegionSummaryView>& regions, const std::v
 class RgMappingKernelIntegrationTest : public CppUnit::TestFixture {
   CPPUNIT_TEST_SUITE(RgMappingKernelIntegrationTest);
   CPPUNIT_TEST(testIntelMapQueriesExportAndResume);
+  CPPUNIT_TEST(testFreiburgMapsAreConsistent);
   CPPUNIT_TEST_SUITE_END();
 
  public:
   void testIntelMapQueriesExportAndResume() {
-    const std::string models = std::string(std::getenv("RGNAV_ROOT")) + "/config/gateways/gateway-hmms.txt";
-    TestCluster cluster({{"LogPlayback", playbackCommand(intelLog()), {"Laser", "Base"}},
-                         {"ScanMapper", {TestCluster::program("rgnav-scanmapper")}, {"ScanMapper"}, {"LogPlayback"}},
-                         {"GatewayDetection",
-                          {TestCluster::program("rgnav-gatewaydetection"), "--models", models},
-                          {"GatewayDetection"},
-                          {"LogPlayback"}},
-                         {"RGMappingKernel",
-                          {TestCluster::program("rgnav-rgmappingkernel")},
-                          {"RGMappingKernel"},
-                          {"ScanMapper", "GatewayDetection"}}},
-                        kFastBackoff);
+    TestCluster cluster(mappingSet(intelLog()), kFastBackoff);
     cluster.start();
     RgMappingKernelClient kernel(cluster.clientSettings());
     const MapSummaryView summary = waitForEnd(kernel);
@@ -120,6 +125,17 @@ class RgMappingKernelIntegrationTest : public CppUnit::TestFixture {
     CPPUNIT_ASSERT_EQUAL(summary.gateways, resumed.gateways);
     CPPUNIT_ASSERT(kernel.gateways() == gateways);
     CPPUNIT_ASSERT_EQUAL(joined.sideA, kernel.regionByName("start room"));
+  }
+
+  void testFreiburgMapsAreConsistent() {
+    for (const char* log : {"freiburg-079-corrected.log.gz", "freiburg-101-corrected.log.gz"}) {
+      TestCluster cluster(mappingSet(TestCluster::shared(std::string("data/laser/corrected/") + log)), kFastBackoff);
+      cluster.start();
+      RgMappingKernelClient kernel(cluster.clientSettings());
+      const MapSummaryView summary = waitForEnd(kernel);
+      CPPUNIT_ASSERT_MESSAGE(log, summary.regions >= 2 && summary.gateways >= 2);
+      checkInvariants(kernel.regions(), kernel.gateways());
+    }
   }
 };
 
