@@ -11,6 +11,7 @@
 #include <random>
 
 #include "core/common/Errors.h"
+#include "core/lines/testing/CentredSegment.h"
 
 using Eigen::Vector2d;
 using rgnav::LineGrid;
@@ -18,15 +19,11 @@ using rgnav::LineMerger;
 using rgnav::LineMergerParams;
 using rgnav::LineSegment;
 using rgnav::segmentFromEndpoints;
+using rgnav::testing::centredSegment;
 
 namespace {
 
 constexpr double kDeg = M_PI / 180.0;
-
-LineSegment segment(rgnav::SegmentId id, const Vector2d& center, double angle, double length) {
-  const Vector2d h = 0.5 * length * Vector2d(std::cos(angle), std::sin(angle));
-  return segmentFromEndpoints(id, center - h, center + h);
-}
 
 bool contains(const std::vector<LineGrid::Handle>& handles, LineGrid::Handle h) {
   return std::find(handles.begin(), handles.end(), h) != handles.end();
@@ -42,18 +39,18 @@ std::size_t checkMergeablePairsAreNear(const LineMergerParams& params, double ce
   LineGrid grid(cellM, rgnav::mergeReach(params));
   rgnav::SegmentId id = 1;
   for (int k = 0; k < 200; ++k)
-    grid.insert(segment(id++, {uniform(-20, 20), uniform(-20, 20)}, uniform(0, M_PI), uniform(0.1, 6.0)));
+    grid.insert(centredSegment(id++, {uniform(-20, 20), uniform(-20, 20)}, uniform(0, M_PI), uniform(0.1, 6.0)));
   std::size_t merges = 0;
   for (int trial = 0; trial < 3000; ++trial) {
     const double angle = uniform(0, M_PI), length = uniform(0.15, trial % 2 == 0 ? 1.0 : 12.0);
     const Vector2d center(uniform(-20, 20), uniform(-20, 20));
     const Vector2d along(std::cos(angle), std::sin(angle)), across(-along.y(), along.x());
-    const LineSegment a = segment(id++, center, angle, length);
+    const LineSegment a = centredSegment(id++, center, angle, length);
     // b: beside or beyond a, tilted and offset up to a little past the limits.
     const double lengthB = uniform(0.15, trial % 3 == 0 ? 0.5 : 8.0);
     const double shift = 0.5 * (length + lengthB) + uniform(-length, 1.2 * params.maxGapM);
     const double tilt = std::min(params.maxAngleRad, 4.0 * params.maxLineDistanceM / (length + lengthB));
-    const LineSegment b = segment(
+    const LineSegment b = centredSegment(
         id++,
         center + (trial % 4 < 2 ? 1.0 : -1.0) * shift * along + uniform(-2.0, 2.0) * params.maxLineDistanceM * across,
         angle + uniform(-1.2, 1.2) * tilt, lengthB);
@@ -96,13 +93,13 @@ class LineGridTest : public CppUnit::TestFixture {
 
   void farLinesAreNotNear() {
     LineGrid grid(1.0, rgnav::mergeReach({}));
-    const auto wall = grid.insert(segment(1, {0, 0}, 0.0, 10.0));
-    grid.insert(segment(2, {0, 5}, 0.0, 10.0));
-    grid.insert(segment(3, {20, 0}, 0.0, 4.0));
-    const auto found = grid.near(segment(4, {3, 0.01}, 0.0, 1.0));
+    const auto wall = grid.insert(centredSegment(1, {0, 0}, 0.0, 10.0));
+    grid.insert(centredSegment(2, {0, 5}, 0.0, 10.0));
+    grid.insert(centredSegment(3, {20, 0}, 0.0, 4.0));
+    const auto found = grid.near(centredSegment(4, {3, 0.01}, 0.0, 1.0));
     CPPUNIT_ASSERT_EQUAL(std::size_t(1), found.size());
     CPPUNIT_ASSERT_EQUAL(wall, found.front());
-    CPPUNIT_ASSERT(grid.near(segment(5, {0, -3}, 0.0, 2.0)).empty());
+    CPPUNIT_ASSERT(grid.near(centredSegment(5, {0, -3}, 0.0, 2.0)).empty());
   }
 
   void eachLineOnceInSweepOrder() {
@@ -113,7 +110,7 @@ class LineGridTest : public CppUnit::TestFixture {
       const double y = double(id) / 64, rise = id <= 4 ? 1.0 / 32 : 1.0 / 64;
       grid.insert(segmentFromEndpoints(id, {-10, y}, {10, y + rise}));
     }
-    const auto found = grid.near(segment(10, {0, 0.1}, 0.0, 15.0));
+    const auto found = grid.near(centredSegment(10, {0, 0.1}, 0.0, 15.0));
     CPPUNIT_ASSERT_EQUAL(std::size_t(9), found.size());
     const std::vector<rgnav::SegmentId> expected{5, 6, 7, 8, 9, 1, 2, 3, 4};
     for (std::size_t i = 0; i < found.size(); ++i) {
@@ -124,18 +121,18 @@ class LineGridTest : public CppUnit::TestFixture {
 
   void removedLinesAreGoneAndHandlesReused() {
     LineGrid grid(1.0, rgnav::mergeReach({}));
-    const auto a = grid.insert(segment(1, {0, 0}, 0.0, 3.0));
-    const auto b = grid.insert(segment(2, {0, 0.05}, 0.0, 3.0));
+    const auto a = grid.insert(centredSegment(1, {0, 0}, 0.0, 3.0));
+    const auto b = grid.insert(centredSegment(2, {0, 0.05}, 0.0, 3.0));
     CPPUNIT_ASSERT_EQUAL(std::size_t(2), grid.size());
     CPPUNIT_ASSERT_EQUAL(rgnav::SegmentId(1), grid.remove(a).id);
     CPPUNIT_ASSERT_EQUAL(std::size_t(1), grid.size());
-    const auto found = grid.near(segment(3, {0, 0}, 0.0, 1.0));
+    const auto found = grid.near(centredSegment(3, {0, 0}, 0.0, 1.0));
     CPPUNIT_ASSERT_EQUAL(std::size_t(1), found.size());
     CPPUNIT_ASSERT_EQUAL(b, found.front());
-    const auto c = grid.insert(segment(4, {30, 30}, 1.0, 2.0));
+    const auto c = grid.insert(centredSegment(4, {30, 30}, 1.0, 2.0));
     CPPUNIT_ASSERT_EQUAL(a, c);
     CPPUNIT_ASSERT_EQUAL(rgnav::SegmentId(4), grid.line(c).id);
-    CPPUNIT_ASSERT(grid.near(segment(5, {0, 0}, 0.0, 1.0)) == found);
+    CPPUNIT_ASSERT(grid.near(centredSegment(5, {0, 0}, 0.0, 1.0)) == found);
   }
 
   void badInputIsTypedError() {
@@ -143,7 +140,7 @@ class LineGridTest : public CppUnit::TestFixture {
     CPPUNIT_ASSERT_THROW(LineGrid(1.0, -0.1), rgnav::InvalidArgumentError);
     CPPUNIT_ASSERT_THROW(LineGrid(std::numeric_limits<double>::infinity(), 0.2), rgnav::InvalidArgumentError);
     LineGrid grid(1.0, 0.2);
-    LineSegment bad = segment(1, {0, 0}, 0.0, 1.0);
+    LineSegment bad = centredSegment(1, {0, 0}, 0.0, 1.0);
     bad.end.x() = std::numeric_limits<double>::quiet_NaN();
     CPPUNIT_ASSERT_THROW(grid.insert(bad), rgnav::InvalidArgumentError);
     CPPUNIT_ASSERT_EQUAL(std::size_t(0), grid.size());

@@ -9,22 +9,18 @@
 #include <random>
 
 #include "core/common/Errors.h"
+#include "core/lines/testing/CentredSegment.h"
 
 using Eigen::Vector2d;
 using rgnav::LineMerger;
 using rgnav::LineMergerParams;
 using rgnav::LineSegment;
 using rgnav::segmentFromEndpoints;
+using rgnav::testing::centredSegment;
 
 namespace {
 
 constexpr double kDeg = M_PI / 180.0;
-
-// A segment of the given length centred at `center`, at `angle` to the x-axis.
-LineSegment segment(rgnav::SegmentId id, const Vector2d& center, double angle, double length) {
-  const Vector2d h = 0.5 * length * Vector2d(std::cos(angle), std::sin(angle));
-  return segmentFromEndpoints(id, center - h, center + h);
-}
 
 // Parameters with every rule but one switched off.
 LineMergerParams only(double angleRad, double lineDistanceM, double gapM) { return {angleRad, lineDistanceM, gapM}; }
@@ -56,12 +52,12 @@ class LineMergerTest : public CppUnit::TestFixture {
 
   void angleWindow() {
     const LineMerger merger(only(3 * kDeg, 1.0, 1.0));
-    const auto a = segment(1, {0, 0}, 0.0, 1.0);
-    CPPUNIT_ASSERT(merger.tryMerge(a, segment(2, {0, 0}, 2.9 * kDeg, 1.0)));
-    CPPUNIT_ASSERT(!merger.tryMerge(a, segment(2, {0, 0}, 3.1 * kDeg, 1.0)));
-    CPPUNIT_ASSERT(merger.tryMerge(a, segment(2, {0, 0}, -2.9 * kDeg, 1.0)));
-    CPPUNIT_ASSERT(!merger.tryMerge(a, segment(2, {0, 0}, -3.1 * kDeg, 1.0)));
-    CPPUNIT_ASSERT_EQUAL(std::size_t(2), merger.merge({a, segment(2, {0, 0}, 3.1 * kDeg, 1.0)}).size());
+    const auto a = centredSegment(1, {0, 0}, 0.0, 1.0);
+    CPPUNIT_ASSERT(merger.tryMerge(a, centredSegment(2, {0, 0}, 2.9 * kDeg, 1.0)));
+    CPPUNIT_ASSERT(!merger.tryMerge(a, centredSegment(2, {0, 0}, 3.1 * kDeg, 1.0)));
+    CPPUNIT_ASSERT(merger.tryMerge(a, centredSegment(2, {0, 0}, -2.9 * kDeg, 1.0)));
+    CPPUNIT_ASSERT(!merger.tryMerge(a, centredSegment(2, {0, 0}, -3.1 * kDeg, 1.0)));
+    CPPUNIT_ASSERT_EQUAL(std::size_t(2), merger.merge({a, centredSegment(2, {0, 0}, 3.1 * kDeg, 1.0)}).size());
   }
 
   void lineDistanceIsMeanOfFourEndpointDistances() {
@@ -76,10 +72,10 @@ class LineMergerTest : public CppUnit::TestFixture {
 
   void lineDistanceLimit() {
     const LineMerger merger(only(10 * kDeg, 0.020, 1.0));
-    const auto a = segment(1, {0, 0}, 0.3, 1.0);
+    const auto a = centredSegment(1, {0, 0}, 0.3, 1.0);
     const Vector2d normal(-std::sin(0.3), std::cos(0.3));
-    CPPUNIT_ASSERT(merger.tryMerge(a, segment(2, 0.019 * normal, 0.3, 1.0)));
-    CPPUNIT_ASSERT(!merger.tryMerge(a, segment(2, 0.021 * normal, 0.3, 1.0)));
+    CPPUNIT_ASSERT(merger.tryMerge(a, centredSegment(2, 0.019 * normal, 0.3, 1.0)));
+    CPPUNIT_ASSERT(!merger.tryMerge(a, centredSegment(2, 0.021 * normal, 0.3, 1.0)));
     // A small angle makes far endpoints leave the line: (0 + 0.03 + 0 + 0.03) / 4 = 0.015.
     const auto b = segmentFromEndpoints(2, {0, 0}, {0.5, 0.0});
     CPPUNIT_ASSERT(merger.tryMerge(b, segmentFromEndpoints(3, {0, 0}, {0.5, 0.03})));
@@ -105,8 +101,8 @@ class LineMergerTest : public CppUnit::TestFixture {
     // 179.5 and 0.5 degrees are 1 degree apart; the sweep must find them across the wrap even
     // with other orientations in between in the sorted array.
     const LineMerger merger;
-    std::vector<LineSegment> segments{segment(1, {0, 0}, 179.5 * kDeg, 1.0), segment(2, {0, 5}, 45 * kDeg, 1.0),
-                                      segment(3, {0, 0}, 0.5 * kDeg, 1.0), segment(4, {0, -5}, 90 * kDeg, 1.0)};
+    std::vector<LineSegment> segments{centredSegment(1, {0, 0}, 179.5 * kDeg, 1.0), centredSegment(2, {0, 5}, 45 * kDeg, 1.0),
+                                      centredSegment(3, {0, 0}, 0.5 * kDeg, 1.0), centredSegment(4, {0, -5}, 90 * kDeg, 1.0)};
     const auto merged = merger.merge(segments);
     CPPUNIT_ASSERT_EQUAL(std::size_t(3), merged.size());
     CPPUNIT_ASSERT(std::any_of(merged.begin(), merged.end(), [](const LineSegment& s) {

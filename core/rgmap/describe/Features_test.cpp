@@ -8,6 +8,7 @@
 
 #include "core/common/Errors.h"
 #include "core/lines/ScanPoints.h"
+#include "core/lines/testing/CentredSegment.h"
 #include "core/rgmap/describe/BoundingRectangles.h"
 #include "core/rgmap/describe/FreespaceRaster.h"
 #include "core/rgmap/describe/LineMapAccuracy.h"
@@ -23,8 +24,7 @@ namespace {
 constexpr double kDeg = M_PI / 180.0;
 
 LineSegment segment(const Vector2d& center, double angle, double length) {
-  const Vector2d h = 0.5 * length * Vector2d(std::cos(angle), std::sin(angle));
-  return segmentFromEndpoints(1, center - h, center + h);
+  return rgnav::testing::centredSegment(1, center, angle, length);
 }
 
 double angleError(double a, double b) { return rgnav::orientationDifference(a, b); }
