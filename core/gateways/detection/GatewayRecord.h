@@ -56,6 +56,9 @@ struct GatewayRecord {
   std::size_t traversals = 0;
 
   const std::string& label() const { return classes.front().name; }
+  // False when the most probable class is a counter-class (Deadend, Hallway): the evidence says
+  // this is no transition between regions.
+  bool isTransition() const;
 
   friend bool operator==(const GatewayRecord&, const GatewayRecord&) = default;
 };

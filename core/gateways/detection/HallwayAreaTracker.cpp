@@ -38,8 +38,6 @@ bool inside(const GatewayPoints& p, const Eigen::Vector2d& q) {
   return positive == 0 || negative == 0;
 }
 
-bool isTransition(GatewayClass c) { return c != GatewayClass::DeadEnd && c != GatewayClass::Hallway; }
-
 }  // namespace
 
 void validate(const HallwayAreaConfig& config) {

@@ -33,6 +33,4 @@ void validateGatewayEvent(const GatewayEvent& event) {
   if (!t.at.allFinite() || !t.direction.allFinite()) throw InvalidArgumentError(what + ": non-finite traversal");
 }
 
-bool isTransitionLabel(const std::string& label) { return label != "Deadend" && label != "Hallway"; }
-
 }  // namespace rgnav

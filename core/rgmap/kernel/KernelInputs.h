@@ -20,8 +20,4 @@ void requireFinite(const Pose2D& pose, const std::string& what);
 // range or equal, or a non-finite traversal point or direction.
 void validateGatewayEvent(const GatewayEvent& event);
 
-// False for the labels that are no transition between regions: "Deadend" and "Hallway" (the
-// counter-classes of thesis 4.1.3, as HallwayAreaTracker.h names them).
-bool isTransitionLabel(const std::string& label);
-
 }  // namespace rgnav

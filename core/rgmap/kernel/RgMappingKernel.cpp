@@ -116,7 +116,7 @@ RegionId RgMappingKernel::joinSide(GatewayId id, std::size_t side, RegionId regi
 void RgMappingKernel::observe(const GatewayEvent& event, const Pose2D& odomToMap, const Pose2D& robot) {
   const GatewayRecord& record = event.gateway;
   const DataId scan = record.lastScan;
-  if (!isTransitionLabel(record.label())) {
+  if (!record.isTransition()) {
     const std::optional<GatewayId> known = findGateway(record.id);
     if (!known) return;
     const Gateway& g = state_.gateways.at(*known);

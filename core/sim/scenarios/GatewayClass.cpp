@@ -17,6 +17,8 @@ std::string_view gatewayClassName(GatewayClass c) {
   return "unknown";
 }
 
+bool isTransition(GatewayClass c) { return c != GatewayClass::DeadEnd && c != GatewayClass::Hallway; }
+
 GatewayOpenings openingsOf(GatewayClass c) {
   switch (c) {
     case GatewayClass::XCrossing: return {true, true, true};

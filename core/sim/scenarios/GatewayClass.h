@@ -27,4 +27,7 @@ struct GatewayOpenings {
 
 GatewayOpenings openingsOf(GatewayClass c);
 
+// False for the two counter-classes (Deadend, Hallway): no transition between regions.
+bool isTransition(GatewayClass c);
+
 }  // namespace rgnav

@@ -1,0 +1,13 @@
+// GatewayRecord's class test (see GatewayRecord.h).
+#include "core/gateways/detection/GatewayRecord.h"
+
+#include "core/gateways/classify/GatewayClassNames.h"
+
+namespace rgnav {
+
+bool GatewayRecord::isTransition() const {
+  const std::optional<GatewayClass> hallwayClass = parseGatewayClass(label());
+  return !hallwayClass || rgnav::isTransition(*hallwayClass);
+}
+
+}  // namespace rgnav
