@@ -4,6 +4,9 @@
 // (rasteriseFreespace, thesis 2.3.2: a global metric map extracted on demand) and kept only on the
 // world's free pixels: the pixels a segmentation of the furnished floor plan can label, as the
 // benchmark's segmentations do (a 15 cm cell straddling a wall is free only on its free side).
+// Each region then grows up to growM over the free pixels no region claims (growIntoUnclaimed,
+// RegionGrowth.h: the strip along walls that 15 cm cells holding the wall leave out), as the
+// benchmark's segmentations end with a wavefront growth over the free pixels.
 #pragma once
 
 #include <vector>
@@ -17,6 +20,7 @@ namespace rgnav {
 
 // One segment per region, ID = region ID, pixel indices row * width + col of `world` (row 0 at
 // the bottom, as GroundTruth::labels).
-std::vector<SegmentPixels> regionPixels(const FinalMap& map, const Pose2D& mapToWorld, const OccupancyGrid& world);
+std::vector<SegmentPixels> regionPixels(const FinalMap& map, const Pose2D& mapToWorld, const OccupancyGrid& world,
+                                        double growM);
 
 }  // namespace rgnav

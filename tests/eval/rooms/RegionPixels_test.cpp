@@ -1,5 +1,6 @@
 // Tests regionPixels (RegionPixels.h) on a hand-made map: a region's freespace lands on the floor
-// plan pixels its frame pose and mapToWorld put it on, and only on the world's free pixels.
+// plan pixels its frame pose and mapToWorld put it on, only on the world's free pixels, and grows
+// over free pixels up to growM.
 #include <cppunit/extensions/HelperMacros.h>
 
 #include <algorithm>
@@ -35,6 +36,7 @@ class RegionPixelsTest : public CppUnit::TestFixture {
   CPPUNIT_TEST_SUITE(RegionPixelsTest);
   CPPUNIT_TEST(placesTheFreespaceByFrameAndMapToWorld);
   CPPUNIT_TEST(keepsOnlyTheWorldsFreePixels);
+  CPPUNIT_TEST(growsOverFreePixelsUpToGrowM);
   CPPUNIT_TEST_SUITE_END();
 
  public:
@@ -43,7 +45,7 @@ class RegionPixelsTest : public CppUnit::TestFixture {
     // Region frame at (0.2, 0.1) in the map, the map shifted by (0.5, 0.2) in the world: the
     // freespace covers [0.7, 1.0) x [0.3, 0.6), pixel columns 14..19 and rows 6..11.
     const std::vector<rgnav::SegmentPixels> segments =
-        rgnav::regionPixels(oneRegion({0.2, 0.1, 0.0}), {0.5, 0.2, 0.0}, world);
+        rgnav::regionPixels(oneRegion({0.2, 0.1, 0.0}), {0.5, 0.2, 0.0}, world, 0.0);
     CPPUNIT_ASSERT_EQUAL(std::size_t(1), segments.size());
     CPPUNIT_ASSERT_EQUAL(std::uint64_t(7), segments[0].id);
     CPPUNIT_ASSERT_EQUAL(std::size_t(36), segments[0].pixels.size());
@@ -56,9 +58,22 @@ class RegionPixelsTest : public CppUnit::TestFixture {
     rgnav::OccupancyGrid world(kWidth, kHeight, 0.05);
     for (int row = 0; row < kHeight; ++row) world.set({16, row}, rgnav::Cell::Occupied);
     const std::vector<rgnav::SegmentPixels> segments =
-        rgnav::regionPixels(oneRegion({0.2, 0.1, 0.0}), {0.5, 0.2, 0.0}, world);
+        rgnav::regionPixels(oneRegion({0.2, 0.1, 0.0}), {0.5, 0.2, 0.0}, world, 0.0);
     CPPUNIT_ASSERT_EQUAL(std::size_t(30), segments[0].pixels.size());
     CPPUNIT_ASSERT(!holds(segments[0], pixel(16, 8)));
+  }
+
+  void growsOverFreePixelsUpToGrowM() {
+    rgnav::OccupancyGrid world(kWidth, kHeight, 0.05);
+    for (int row = 0; row < kHeight; ++row) world.set({22, row}, rgnav::Cell::Occupied);
+    // Columns 14..19 claimed; 0.1 m of growth adds columns 12, 13, 20, 21 (the wall at 22 stops
+    // it) and rows 4, 5, 12, 13.
+    const std::vector<rgnav::SegmentPixels> segments =
+        rgnav::regionPixels(oneRegion({0.2, 0.1, 0.0}), {0.5, 0.2, 0.0}, world, 0.1);
+    CPPUNIT_ASSERT_EQUAL(std::size_t(10 * 10), segments[0].pixels.size());
+    CPPUNIT_ASSERT(holds(segments[0], pixel(12, 4)));
+    CPPUNIT_ASSERT(holds(segments[0], pixel(21, 13)));
+    CPPUNIT_ASSERT(!holds(segments[0], pixel(23, 8)));
   }
 };
 

@@ -2,8 +2,8 @@
 // plans X_furnitures.png (floorplans/SOURCES.md). For each map the simulator drives the room tour
 // through every ground-truth room and the scans are mapped in process (MappingRun.h: SLAM ->
 // gateway detection -> RG Mapping Kernel, poses revised after every SLAM optimisation and at the
-// end); the final regions' freespace is placed into the floor plan (RegionPixels.h) and scored
-// against the ground-truth rooms with the benchmark's metric (RoomScoring.h). Prints a row per map
+// end); the final regions' freespace is placed into the floor plan and grown by --grow over the
+// free pixels no region claims (RegionPixels.h), and scored against the ground-truth rooms with the benchmark's metric (RoomScoring.h). Prints a row per map
 // with a line of where it loses (ScoreBreakdown.h) and, last,
 //   rooms: maps=… recall_mean=… precision_mean=… recall_pooled=… precision_pooled=…
 // where the means are over the maps' means and the pooled figures sum pixels over all maps. A
@@ -42,6 +42,7 @@ struct Options {
   std::string outDir = "out/rooms";
   bool list = false;
   bool regionPictures = false;
+  double growM = 0.3;
 };
 
 struct Totals {
@@ -66,7 +67,7 @@ void evaluate(const std::string& mapPath, const Options& options, const std::opt
   const IpaFiles files = ipaFilesOf(mapPath);
   if (!world.truth) throw FileError(mapPath + ": no ground-truth rooms beside it (" + files.truth + ")");
   const MappingRun run = mapRoomTour(world.grid, *world.truth, options.setup, classifier);
-  const std::vector<SegmentPixels> regions = regionPixels(run.map, run.mapToWorld, world.grid);
+  const std::vector<SegmentPixels> regions = regionPixels(run.map, run.mapToWorld, world.grid, options.growM);
   const RoomScore score = scoreRooms(*world.truth, regions);
   const ScoreBreakdown losses = breakDownScore(*world.truth, world.grid, regions, score, run.unreachableRooms);
   writeRoomImage(options.outDir + "/" + files.name + "_rooms.png", world.grid, *world.truth, run.map, run.mapToWorld,
@@ -103,15 +104,16 @@ void evaluate(const std::string& mapPath, const Options& options, const std::opt
   totals.segmentPixels += score.segmentPixelSum();
 }
 
-void printHeader(bool hallways, bool truePoses) {
+void printHeader(bool hallways, bool truePoses, double growM) {
   std::printf("# room tour in the simulator -> ScanMapper (odometry-noised scans) -> GatewayDetector (%s)\n"
               "# -> RG Mapping Kernel, poses revised after SLAM optimisations and at the end; region freespace\n"
-              "# on the floor plan's free pixels vs. the GT rooms (benchmark metric: per-room recall, per-region\n"
-              "# precision, regions <= 100 px dropped). tour: rooms visited/planned; pose_m: mean/max distance of\n"
+              "# on the floor plan's free pixels, grown %.2f m into free pixels no region claims (RegionGrowth.h),\n"
+              "# vs. the GT rooms (benchmark metric: per-room recall, per-region precision, regions <= 100 px\n"
+              "# dropped). tour: rooms visited/planned; pose_m: mean/max distance of\n"
               "# the final corrected positions from the true ones (map frame aligned at the first scan); losses:\n"
               "# mean room shares (ceiling: free in the furnished map and reachable, covered by any region, best\n"
               "# region) and shares of region pixels outside their best room (ScoreBreakdown.h)%s\n",
-              hallways ? "narrow passages + hallway gateways" : "narrow passages only, no HMM file",
+              hallways ? "narrow passages + hallway gateways" : "narrow passages only, no HMM file", growM,
               truePoses ? "\n# TRUE POSES: the kernel gets the true pose of every scan, SLAM is not run" : "");
   std::printf("%-26s %5s %7s %8s %11s %6s %7s | %6s %9s %7s %9s | %7s %9s %5s\n", "map", "rooms", "regions",
               "gateways", "neutralised", "scans", "scans/s", "recall", "precision", "rec_px", "prec_px", "tour",
@@ -132,6 +134,8 @@ int main(int argc, char** argv) {
       ("list", po::bool_switch(&options.list), "print every room, region and gateway with its match")
       ("region-pictures", po::bool_switch(&options.regionPictures),
        "also write <map>_region<N>.png per region, with its scans' true positions")
+      ("grow", po::value(&options.growM)->default_value(options.growM, shown(options.growM)),
+       "regions grow this far over free pixels no region claims, m (RegionPixels.h)")
       ("models", po::value(&options.models)->default_value(options.models),
        "trained HMM file; used if it exists (else narrow passages only)")
       ("hallway-width", po::value(&options.setup.pipeline.gateways.hallways.hypotheses.hallwayWidthM)
@@ -169,7 +173,7 @@ int main(int argc, char** argv) {
     std::optional<HmmClassifier> classifier;
     if (std::filesystem::exists(options.models)) classifier = loadHmmModels(options.models);
     std::filesystem::create_directories(options.outDir);
-    printHeader(classifier.has_value(), options.setup.truePoses);
+    printHeader(classifier.has_value(), options.setup.truePoses, options.growM);
     Totals totals;
     for (const std::string& map : maps) evaluate(map, options, classifier, totals);
     const auto n = double(std::max<std::size_t>(totals.maps, 1));
