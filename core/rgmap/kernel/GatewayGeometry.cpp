@@ -73,6 +73,9 @@ std::optional<std::size_t> robotCrossing(const Gateway& gateway, const Eigen::Ve
     return outsideDistance(g, robot) < config.marginM ? std::nullopt : std::optional(nearest);
   const double d = signedDistance(g[0], g[1], robot);
   if (std::abs(d) < config.marginM) return std::nullopt;
+  const Eigen::Vector2d along = g[1] - g[0];
+  const double t = along.dot(robot - g[0]) / along.norm();
+  if (t < -config.besideM || t > along.norm() + config.besideM) return std::nullopt;
   return (d > 0.0) == (signedDistance(g[0], g[1], c[0]) > 0.0) ? 0 : 1;
 }
 

@@ -11,7 +11,9 @@
 //     square or beyond another side is kept out of the region's description.
 //   - The robot's side: the crossing point nearest to the robot, if it is within rangeM; not
 //     decided while the robot is within marginM of a passage's line or of the square of a
-//     hallway area (it may be crossing it right now).
+//     hallway area (it may be crossing it right now), nor (ours) while it is more than besideM
+//     beside a passage's ends: a robot in the next room along a hallway wall is on the same side
+//     of a door's line as the room behind that door, but not in it.
 //   - A missed traversal (6.1.1, figure 6.4): the last step of the robot's path that crossed a
 //     narrow passage's line onto the side the robot is on now. Deliberate difference: not
 //     searched for hallway areas, whose traversals the detector reports itself
@@ -33,6 +35,7 @@ namespace rgnav {
 struct SideEvidenceConfig {
   double marginM = 0.3;  // no side within this distance of the gateway line (area)
   double rangeM = 2.5;   // no side farther than this from the nearest crossing point
+  double besideM = 0.5;  // a passage: no side farther than this beside its line's ends
 };
 
 // corrected(lastScan) ∘ odometry(lastScan)^-1, with record.lastPose as odometry(lastScan).

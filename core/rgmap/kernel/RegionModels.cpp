@@ -27,6 +27,18 @@ std::vector<GatewaySegment> regionGatewaySegments(const RgMapState& state, const
   return out;
 }
 
+std::vector<GatewaySegment> regionCuttingLines(const RgMapState& state, const Region& region) {
+  std::vector<GatewaySegment> out = regionGatewaySegments(state, region);
+  for (const auto& [id, gateway] : state.gateways) {
+    const bool own = std::any_of(gateway.sides.begin(), gateway.sides.end(),
+                                 [&](const GatewaySideRef& side) { return side.region == region.id; });
+    if (!gateway.door() || gateway.neutralised || own) continue;
+    const PlacedGateway placed = placeGateway(gateway, region.frame);
+    out.push_back({placed.gatewayPoints[0], placed.gatewayPoints[1]});
+  }
+  return out;
+}
+
 RegionModels::RegionModels(const RegionModelConfig& config) : config_(config) {
   // Both throw for a bad configuration (ConfigError, InvalidArgumentError), before any region needs them.
   RegionEvidence{config.evidence};
@@ -38,10 +50,12 @@ RegionModels::Model& RegionModels::upToDate(const RgMapState& state, RegionId id
   if (region == state.regions.end()) throw NotAvailableError("no region " + std::to_string(id));
   const Region& r = region->second;
   const std::vector<GatewaySegment> gateways = regionGatewaySegments(state, r);
+  const std::vector<GatewaySegment> cutting = regionCuttingLines(state, r);
 
   auto it = models_.find(id);
   const auto keyAt = [&](std::size_t i) { return ScanKey{r.scans[i], state.scans.at(r.scans[i]).corrected}; };
   bool reusable = it != models_.end() && it->second.frame == r.frame && sameSegments(it->second.gateways, gateways) &&
+                  sameSegments(it->second.cutting, cutting) &&
                   it->second.scans.size() <= r.scans.size();
   for (std::size_t i = 0; reusable && i < it->second.scans.size(); ++i) reusable = it->second.scans[i] == keyAt(i);
   if (!reusable) {
@@ -49,6 +63,7 @@ RegionModels::Model& RegionModels::upToDate(const RgMapState& state, RegionId id
     it = models_
              .emplace(id, Model{r.frame,
                                 gateways,
+                                cutting,
                                 {},
                                 RegionLineMap(config_.extractor, config_.merger),
                                 RegionEvidence(config_.evidence),
@@ -61,7 +76,7 @@ RegionModels::Model& RegionModels::upToDate(const RgMapState& state, RegionId id
       const ScanKey key = keyAt(i);
       const Pose2D inRegion = between(r.frame, key.corrected);
       const LaserScan& scan = state.scans.at(key.id).scan;
-      m.evidence.addScan(scan, inRegion, m.gateways);  // the only step that can reject the scan
+      m.evidence.addScan(scan, inRegion, m.cutting);  // the only step that can reject the scan
       m.lines.addScan(scan, inRegion);
       m.scans.push_back(key);
       m.description.reset();

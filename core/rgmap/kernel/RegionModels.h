@@ -1,12 +1,14 @@
 // RegionModels: the metric description M and the properties P of each region (thesis 2.1.1,
 // 5.2): its 2D line segment map (RegionLineMap) and its RegionDescription, in the region's own
-// frame, computed from the region's aligned scans and its gateway lines (GatewayGeometry.h).
+// frame, computed from the region's aligned scans and its gateway lines (GatewayGeometry.h), its
+// beams cut at every door (regionCuttingLines).
 // Both are pure functions of the map state (the region's scans in ID order with their corrected
-// poses, its frame, its gateway lines), so they are not part of a checkpoint: a resumed kernel
-// computes the very same ones. They are computed on demand and cached; a cached model remembers
-// its inputs and is reused when they are unchanged, extended scan by scan when the region only
-// gained scans (the current region while the robot is in it), and rebuilt otherwise (merged or
-// split regions, revised poses, moved gateways). So nobody has to tell the cache what changed.
+// poses, its frame, its gateway lines and the map's doors), so they are not part of a checkpoint:
+// a resumed kernel computes the very same ones. They are computed on demand and cached; a cached
+// model remembers its inputs and is reused when they are unchanged, extended scan by scan when the
+// region only gained scans (the current region while the robot is in it), and rebuilt otherwise
+// (merged or split regions, revised poses, moved or new doors). So nobody has to tell the cache
+// what changed.
 // Memory: the line map and the description evidence (freespace counts, hull, a bounded sample of
 // measurements) of every region that was asked for.
 #pragma once
@@ -33,6 +35,12 @@ struct RegionModelConfig {
 // by gateway ID and side.
 std::vector<GatewaySegment> regionGatewaySegments(const RgMapState& state, const Region& region);
 
+// The lines that cut the region's beams (thesis 5.2: "laser beams that cross a gateway are
+// filtered out"): its own gateway lines, then (ours) the line of every other door that is not
+// neutralised, in the region's frame. A region also sees through doors between other regions
+// (through an open room into the next one), and what lies behind them is no part of it either.
+std::vector<GatewaySegment> regionCuttingLines(const RgMapState& state, const Region& region);
+
 class RegionModels {
  public:
   explicit RegionModels(const RegionModelConfig& config = {});
@@ -54,7 +62,8 @@ class RegionModels {
   };
   struct Model {
     Pose2D frame;
-    std::vector<GatewaySegment> gateways;
+    std::vector<GatewaySegment> gateways;  // its own gateway lines
+    std::vector<GatewaySegment> cutting;   // regionCuttingLines
     std::vector<ScanKey> scans;  // the scans in `lines` and `evidence`, in order
     RegionLineMap lines;
     RegionEvidence evidence;

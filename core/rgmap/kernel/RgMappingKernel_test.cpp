@@ -2,7 +2,8 @@
 // hallway with two rooms behind doors: three regions and two gateways with references both ways,
 // gateways placed from the drifting odometry frame into the map frame, scans in the region they
 // were taken in, a revisited room updated and not duplicated, region descriptions, naming,
-// merging on request, a path through the RG Graph, revised SLAM poses, bad inputs refused.
+// merging on request, a path through the RG Graph, revised SLAM poses, bad inputs refused; beams
+// cut at every door, no robot side beside a door's ends.
 #include "core/rgmap/kernel/RgMappingKernel.h"
 
 #include <cppunit/extensions/HelperMacros.h>
@@ -72,6 +73,8 @@ class RgMappingKernelTest : public CppUnit::TestFixture {
   CPPUNIT_TEST(scansLieInTheRegionTheyWereTakenIn);
   CPPUNIT_TEST(revisitedRoomIsUpdatedNotDuplicated);
   CPPUNIT_TEST(descriptionsStayInsideTheirRooms);
+  CPPUNIT_TEST(beamsAreCutAtEveryDoor);
+  CPPUNIT_TEST(noSideBesideAPassagesEnds);
   CPPUNIT_TEST(preliminaryDescriptionGrowsWithTheScans);
   CPPUNIT_TEST(hallwayTurnJoinsTwoRegions);
   CPPUNIT_TEST(regionsAreNamedAndFoundByName);
@@ -223,6 +226,30 @@ class RgMappingKernelTest : public CppUnit::TestFixture {
     CPPUNIT_ASSERT_EQUAL(std::size_t(2), k.state().regions.size());
     CPPUNIT_ASSERT_EQUAL(RegionId(2), k.currentRegionId());
     CPPUNIT_ASSERT_EQUAL(RgMapEventKind::GatewayTraversed, k.state().events.back().kind);
+  }
+
+  void beamsAreCutAtEveryDoor() {
+    const RgMappingKernel k = mappedFloor();
+    const RgMapState& s = k.state();
+    // Room 1: its own door, then room 2's door, in room 1's frame.
+    const Region& room1 = s.regions.at(kRoom1);
+    const std::vector<GatewaySegment> cutting = regionCuttingLines(s, room1);
+    CPPUNIT_ASSERT_EQUAL(std::size_t(2), cutting.size());
+    const PlacedGateway door2 = placeGateway(s.gateways.at(kDoor2), room1.frame);
+    CPPUNIT_ASSERT(cutting[1].a == door2.gatewayPoints[0] && cutting[1].b == door2.gatewayPoints[1]);
+    // The hallway has both doors as its own gateway lines: nothing more.
+    CPPUNIT_ASSERT_EQUAL(std::size_t(2), regionCuttingLines(s, s.regions.at(kHallway)).size());
+  }
+
+  void noSideBesideAPassagesEnds() {
+    const RgMappingKernel k = mappedFloor();
+    const Gateway& door1 = k.state().gateways.at(kDoor1);  // (3.55, 2)-(4.45, 2), the hallway below
+    const SideEvidenceConfig config;                       // marginM 0.3, rangeM 2.5, besideM 0.5
+    const std::optional<std::size_t> room(1);
+    CPPUNIT_ASSERT(robotCrossing(door1, {4.0, 3.0}, config) == room);
+    CPPUNIT_ASSERT(robotCrossing(door1, {4.9, 3.0}, config) == room);  // 0.45 m beside its end
+    CPPUNIT_ASSERT(!robotCrossing(door1, {5.2, 3.0}, config));         // 0.75 m beside: the next room
+    CPPUNIT_ASSERT(!robotCrossing(door1, {2.8, 2.8}, config));
   }
 
   void regionsAreNamedAndFoundByName() {
