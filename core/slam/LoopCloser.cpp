@@ -18,7 +18,8 @@ SearchWindow LoopCloser::window(double distanceSinceLoop) const {
 std::vector<Constraint> LoopCloser::search(const SlamState& state, KeyframeIndex current,
                                            std::span<const std::vector<Eigen::Vector2f>> normals) {
   const Keyframe& keyframe = state.keyframes[current];
-  const RegistrationCriteria criteria{window(state.distanceSinceLoop), config_.minScore, config_.minInlierFraction};
+  const RegistrationCriteria criteria{window(state.distanceSinceLoop), config_.minScore, config_.minInlierFraction,
+                                     config_.undetermined};
   std::vector<std::pair<double, std::size_t>> candidates;
   for (std::size_t s = 0; s < state.submaps.size(); ++s) {
     const SubmapRecord& submap = state.submaps[s];

@@ -3,6 +3,8 @@
 
 #include <algorithm>
 
+#include "core/slam/UndeterminedDirection.h"
+
 namespace rgnav {
 
 std::optional<Registration> registerScan(const ReferenceMap& reference, std::span<const Eigen::Vector2f> query,
@@ -19,6 +21,11 @@ std::optional<Registration> registerScan(const ReferenceMap& reference, std::spa
   if (prior != nullptr) {
     result.information += prior->information;
   } else {
+    if (criteria.undetermined) {
+      const auto direction =
+          undeterminedDirection(reference.grid(), query, result.pose, result.information, *criteria.undetermined);
+      if (direction) dropDirection(result.pose, result.information, guess, *direction);
+    }
     // The window bounds the pose even where the scan does not (a featureless corridor): a floor
     // that keeps the information positive definite.
     const double resolution = reference.grid().resolution();

@@ -81,6 +81,9 @@ void validate(const SlamConfig& c) {
   requireCount(c.loop.maxCandidates, "loop.maxCandidates");
   requireFraction(c.loop.minScore, "loop.minScore");
   requireFraction(c.loop.minInlierFraction, "loop.minInlierFraction");
+  requireFraction(c.loop.undetermined.maxInformationRatio, "loop.undetermined.maxInformationRatio");
+  requirePositive(c.loop.undetermined.shift, "loop.undetermined.shift");
+  requireFraction(c.loop.undetermined.minScoreDrop, "loop.undetermined.minScoreDrop");
   requireCount(c.loop.cachedSubmaps, "loop.cachedSubmaps");
   validateGrid(c.loop.grid, "loop.grid");
 

@@ -62,6 +62,15 @@ struct LocalRegistrationConfig {
   OdometryModelConfig odometry;
 };
 
+// The test of a revisit's least-constrained direction (UndeterminedDirection.h): the position
+// along it is undetermined if the point information along it is weak AND shifting the pose
+// along it hardly lowers the correlative score.
+struct UndeterminedDirectionConfig {
+  double maxInformationRatio = 0.05;  // weakest / strongest translational point information below this
+  double shift = 0.2;                 // m, both ways along the weakest direction
+  double minScoreDrop = 0.03;         // relative drop of the score that the shift must reach to determine it
+};
+
 // Detection and verification of revisits against submaps of older keyframes.
 struct LoopClosureConfig {
   std::size_t submapKeyframes = 10;       // consecutive keyframes per submap
@@ -76,6 +85,7 @@ struct LoopClosureConfig {
   std::size_t maxCandidates = 3;          // nearest submaps searched per keyframe
   double minScore = 0.6;                  // correlative score a revisit must reach
   double minInlierFraction = 0.6;         // of the scan's points after refinement
+  UndeterminedDirectionConfig undetermined;  // a revisit constrains only the directions its scan determines
   std::size_t cachedSubmaps = 24;         // rasterised submaps kept in memory
   GridConfig grid;
 };
