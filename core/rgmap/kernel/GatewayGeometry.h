@@ -34,7 +34,7 @@ namespace rgnav {
 
 struct SideEvidenceConfig {
   double marginM = 0.3;  // no side within this distance of the gateway line (area)
-  double rangeM = 2.5;   // no side farther than this from the nearest crossing point
+  double rangeM = 1.5;   // no side farther than this from the nearest crossing point
   double besideM = 0.5;  // a passage: no side farther than this beside its line's ends
 };
 

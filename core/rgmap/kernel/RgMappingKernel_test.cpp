@@ -244,7 +244,8 @@ class RgMappingKernelTest : public CppUnit::TestFixture {
   void noSideBesideAPassagesEnds() {
     const RgMappingKernel k = mappedFloor();
     const Gateway& door1 = k.state().gateways.at(kDoor1);  // (3.55, 2)-(4.45, 2), the hallway below
-    const SideEvidenceConfig config;                       // marginM 0.3, rangeM 2.5, besideM 0.5
+    SideEvidenceConfig config;  // marginM 0.3, besideM 0.5
+    config.rangeM = 2.5;        // all four positions are within it of a crossing point
     const std::optional<std::size_t> room(1);
     CPPUNIT_ASSERT(robotCrossing(door1, {4.0, 3.0}, config) == room);
     CPPUNIT_ASSERT(robotCrossing(door1, {4.9, 3.0}, config) == room);  // 0.45 m beside its end
