@@ -27,8 +27,8 @@ std::vector<GatewaySegment> regionGatewaySegments(const RgMapState& state, const
   return out;
 }
 
-std::vector<GatewaySegment> regionCuttingLines(const RgMapState& state, const Region& region) {
-  std::vector<GatewaySegment> out = regionGatewaySegments(state, region);
+std::vector<GatewaySegment> otherDoorLines(const RgMapState& state, const Region& region) {
+  std::vector<GatewaySegment> out;
   for (const auto& [id, gateway] : state.gateways) {
     const bool own = std::any_of(gateway.sides.begin(), gateway.sides.end(),
                                  [&](const GatewaySideRef& side) { return side.region == region.id; });
@@ -50,7 +50,9 @@ RegionModels::Model& RegionModels::upToDate(const RgMapState& state, RegionId id
   if (region == state.regions.end()) throw NotAvailableError("no region " + std::to_string(id));
   const Region& r = region->second;
   const std::vector<GatewaySegment> gateways = regionGatewaySegments(state, r);
-  const std::vector<GatewaySegment> cutting = regionCuttingLines(state, r);
+  std::vector<GatewaySegment> cutting = gateways;
+  const std::vector<GatewaySegment> others = otherDoorLines(state, r);
+  cutting.insert(cutting.end(), others.begin(), others.end());
 
   auto it = models_.find(id);
   const auto keyAt = [&](std::size_t i) { return ScanKey{r.scans[i], state.scans.at(r.scans[i]).corrected}; };

@@ -1,7 +1,7 @@
 // RegionModels: the metric description M and the properties P of each region (thesis 2.1.1,
 // 5.2): its 2D line segment map (RegionLineMap) and its RegionDescription, in the region's own
 // frame, computed from the region's aligned scans and its gateway lines (GatewayGeometry.h), its
-// beams cut at every door (regionCuttingLines).
+// beams cut at every door (otherDoorLines).
 // Both are pure functions of the map state (the region's scans in ID order with their corrected
 // poses, its frame, its gateway lines and the map's doors), so they are not part of a checkpoint:
 // a resumed kernel computes the very same ones. They are computed on demand and cached; a cached
@@ -35,11 +35,12 @@ struct RegionModelConfig {
 // by gateway ID and side.
 std::vector<GatewaySegment> regionGatewaySegments(const RgMapState& state, const Region& region);
 
-// The lines that cut the region's beams (thesis 5.2: "laser beams that cross a gateway are
-// filtered out"): its own gateway lines, then (ours) the line of every other door that is not
-// neutralised, in the region's frame. A region also sees through doors between other regions
-// (through an open room into the next one), and what lies behind them is no part of it either.
-std::vector<GatewaySegment> regionCuttingLines(const RgMapState& state, const Region& region);
+// The lines of every door that is not neutralised and not the region's own, in the region's
+// frame. With the region's own gateway lines they cut its beams (thesis 5.2: "laser beams that
+// cross a gateway are filtered out"; ours: every door, not only its own): a region also sees
+// through doors between other regions (through an open room into the next one), and what lies
+// behind them is no part of it either.
+std::vector<GatewaySegment> otherDoorLines(const RgMapState& state, const Region& region);
 
 class RegionModels {
  public:
@@ -63,7 +64,7 @@ class RegionModels {
   struct Model {
     Pose2D frame;
     std::vector<GatewaySegment> gateways;  // its own gateway lines
-    std::vector<GatewaySegment> cutting;   // regionCuttingLines
+    std::vector<GatewaySegment> cutting;   // `gateways`, then otherDoorLines: what cuts its beams
     std::vector<ScanKey> scans;  // the scans in `lines` and `evidence`, in order
     RegionLineMap lines;
     RegionEvidence evidence;
