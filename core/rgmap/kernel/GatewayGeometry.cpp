@@ -44,6 +44,21 @@ PlacedGateway placeGateway(const Gateway& gateway, const Pose2D& frame) {
   return out;
 }
 
+bool sameDoor(const PlacedGateway& a, const PlacedGateway& b, double toleranceM) {
+  const auto near = [&](std::size_t i, std::size_t j) {
+    return (a.gatewayPoints[i] - b.gatewayPoints[j]).norm() <= toleranceM;
+  };
+  return (near(0, 0) && near(1, 1)) || (near(0, 1) && near(1, 0));
+}
+
+std::size_t nearestCrossing(const PlacedGateway& placed, const Eigen::Vector2d& p) {
+  const std::vector<Eigen::Vector2d>& c = placed.crossingPoints;
+  std::size_t nearest = 0;
+  for (std::size_t i = 1; i < c.size(); ++i)
+    if ((c[i] - p).norm() < (c[nearest] - p).norm()) nearest = i;
+  return nearest;
+}
+
 std::vector<GatewaySegment> sideSegments(const Gateway& gateway, std::size_t side, const Pose2D& frame) {
   const PlacedGateway placed = placeGateway(gateway, frame);
   const std::vector<Eigen::Vector2d>& g = placed.gatewayPoints;
@@ -65,9 +80,7 @@ std::optional<std::size_t> robotCrossing(const Gateway& gateway, const Eigen::Ve
   const PlacedGateway placed = placeGateway(gateway);
   const std::vector<Eigen::Vector2d>& c = placed.crossingPoints;
   const std::vector<Eigen::Vector2d>& g = placed.gatewayPoints;
-  std::size_t nearest = 0;
-  for (std::size_t i = 1; i < c.size(); ++i)
-    if ((c[i] - robot).norm() < (c[nearest] - robot).norm()) nearest = i;
+  const std::size_t nearest = nearestCrossing(placed, robot);
   if ((c[nearest] - robot).norm() > config.rangeM) return std::nullopt;
   if (gateway.record.kind == GatewayKind::HallwayArea)
     return outsideDistance(g, robot) < config.marginM ? std::nullopt : std::optional(nearest);

@@ -17,7 +17,7 @@ namespace {
 using nlohmann::json;
 
 constexpr const char* kFormat = "rgnav-rg-map";
-constexpr int kVersion = 1;
+constexpr int kVersion = 2;
 
 [[noreturn]] void damaged(const std::string& what) { throw FormatError("<checkpoint>", 0, what); }
 
@@ -44,13 +44,19 @@ json gateway(const Gateway& g) {
                 {"crossing", s.crossing == kNoCrossing ? json() : json(s.crossing)},
                 {"attachedAt", s.attachedAt}};
   });
-  return {{"id", g.id},     {"record", jsonGatewayRecord(g.record)},         {"odomToMap", jsonPose(g.odomToMap)},
-          {"sides", sides}, {"traversalsFrom", g.traversalsFrom}, {"neutralised", g.neutralised}};
+  return {{"id", g.id},
+          {"record", jsonGatewayRecord(g.record)},
+          {"aliases", g.aliases},
+          {"odomToMap", jsonPose(g.odomToMap)},
+          {"sides", sides},
+          {"traversalsFrom", g.traversalsFrom},
+          {"neutralised", g.neutralised}};
 }
 Gateway gateway(const json& j) {
   Gateway g;
   g.id = j.at("id");
   g.record = gatewayRecordFrom(j.at("record"));
+  g.aliases = j.at("aliases").get<std::vector<DetectorGatewayId>>();
   g.odomToMap = poseFrom(j.at("odomToMap"));
   const json& sides = j.at("sides");
   if (sides.size() != 2) damaged("gateway " + std::to_string(g.id) + ": want two sides");

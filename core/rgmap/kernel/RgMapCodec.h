@@ -1,5 +1,5 @@
 // The RG Mapping Kernel's checkpoint: its whole state (RgMapState.h) as versioned JSON
-// ({"format": "rgnav-rg-map", "version": 1, ...}). The RGMappingKernel server writes it after
+// ({"format": "rgnav-rg-map", "version": 2, ...}). The RGMappingKernel server writes it after
 // every change and resumes from it (with lastScanId and lastGatewayEventId it knows where to go
 // on in its input streams); a resumed kernel goes on exactly as if it had not stopped, and the
 // same state always gives the same bytes.

@@ -43,6 +43,7 @@ class RgMapCodecTest : public CppUnit::TestFixture {
   CPPUNIT_TEST(resumedKernelEndsIdentically);
   CPPUNIT_TEST(resumedRingClosesTheSameLoop);
   CPPUNIT_TEST(rangesOfEveryKindSurvive);
+  CPPUNIT_TEST(doorAliasesSurvive);
   CPPUNIT_TEST(damagedCheckpointsAreFormatErrors);
   CPPUNIT_TEST(brokenStatesAreReported);
   CPPUNIT_TEST_SUITE_END();
@@ -116,6 +117,14 @@ class RgMapCodecTest : public CppUnit::TestFixture {
     CPPUNIT_ASSERT_EQUAL(text, serializeRgMap(back));
   }
 
+  void doorAliasesSurvive() {
+    const std::vector<KernelInput> inputs = rgnav::testing::twoRoomTour().inputs();
+    RgMapState s = mapped(inputs, inputs.size()).state();
+    s.gateways.at(1).aliases = {111, 112};
+    const RgMapState back = deserializeRgMap(serializeRgMap(s));
+    CPPUNIT_ASSERT(back.gateways == s.gateways);
+  }
+
   void damagedCheckpointsAreFormatErrors() {
     const std::vector<KernelInput> inputs = rgnav::testing::twoRoomTour().inputs();
     const std::string good = serializeRgMap(mapped(inputs, inputs.size()).state());
@@ -123,7 +132,7 @@ class RgMapCodecTest : public CppUnit::TestFixture {
     expectFormatError(good.substr(0, good.size() / 2));
     expectFormatError("");
     expectFormatError("[1, 2, 3]");
-    expectFormatError(replaced(good, "\"version\":1", "\"version\":2"));
+    expectFormatError(replaced(good, "\"version\":2", "\"version\":1"));
     expectFormatError(replaced(good, "\"rgnav-rg-map\"", "\"rgnav-gateway-detection\""));
     expectFormatError(replaced(good, "\"RegionCreated\"", "\"RegionBorn\""));
     expectFormatError(replaced(good, "\"kind\":\"NarrowPassage\"", "\"kind\":\"Staircase\""));
@@ -149,6 +158,10 @@ class RgMapCodecTest : public CppUnit::TestFixture {
     s = good;
     s.regions.at(3).gateways.insert(1);  // room 2 claims room 1's door
     CPPUNIT_ASSERT(mentions(checkConsistency(s), "region 3 lists gateway 1, which does not name it"));
+
+    s = good;
+    s.gateways.at(2).aliases = {s.gateways.at(1).record.id};  // door 2 also answers to door 1's detector ID
+    CPPUNIT_ASSERT(mentions(checkConsistency(s), "gateway 2: detector gateway 11 is mapped twice"));
 
     s = good;
     s.gateways.at(2).neutralised = true;

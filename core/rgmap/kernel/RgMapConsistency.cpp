@@ -60,8 +60,12 @@ std::vector<std::string> checkConsistency(const RgMapState& s) {
   std::set<DetectorGatewayId> detectorIds;
   for (const auto& [id, g] : s.gateways) {
     if (g.id != id || id == 0 || id >= s.nextGatewayId) out.push_back(gatewayName(id) + ": bad ID");
+    for (const DetectorGatewayId detectorId : g.aliases)
+      if (detectorId == g.record.id || !detectorIds.insert(detectorId).second)
+        out.push_back(gatewayName(id) + ": detector gateway " + std::to_string(detectorId) + " is mapped twice");
     if (!detectorIds.insert(g.record.id).second)
       out.push_back(gatewayName(id) + ": detector gateway " + std::to_string(g.record.id) + " is mapped twice");
+    if (!g.aliases.empty() && !g.door()) out.push_back(gatewayName(id) + ": a hallway area with further detector IDs");
     checkGateway(s, g, out);
   }
 

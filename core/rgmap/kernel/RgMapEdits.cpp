@@ -37,7 +37,7 @@ RegionId createRegion(RgMapState& s, const Pose2D& frame, DataId scan) {
 
 GatewayId addGateway(RgMapState& s, const GatewayRecord& record, const Pose2D& odomToMap, DataId scan) {
   const GatewayId id = s.nextGatewayId++;
-  Gateway g{id, record, odomToMap, {}, {}, false};
+  Gateway g{id, record, odomToMap, {}, {}, false, {}};
   if (record.kind == GatewayKind::NarrowPassage) {
     g.sides[kSideA].crossing = 0;
     g.sides[kSideB].crossing = 1;

@@ -4,6 +4,10 @@
 // now, is neutralised; traversing it again changes nothing. A door missed on the way into a room
 // (figure 6.4) is repaired when it is later observed from inside the room, or only reported when
 // the robot leaves through it: the hallway's region is split where the path crossed the door.
+// A door the detector reports anew under another ID is the known door: traversed out of the room
+// it keeps the room and the hallway apart (its crossing points numbered from the room's side),
+// and seen again from the west of the ring it closes the loop as the first door would; seen
+// through another door, it closes nothing.
 // Gateway hypotheses that turn out to be no transition are dropped. Consistency holds after
 // every input.
 #include <cppunit/extensions/HelperMacros.h>
@@ -74,6 +78,9 @@ class RgMapLoopsTest : public CppUnit::TestFixture {
   CPPUNIT_TEST(ringLoopMergesRegionsAndNeutralisesTheDoor);
   CPPUNIT_TEST(doorMissedOnEntryIsRepairedWhenSeenFromInside);
   CPPUNIT_TEST(doorMissedOnEntryIsRepairedWhenTraversedOut);
+  CPPUNIT_TEST(doorDetectedAnewIsTheKnownDoor);
+  CPPUNIT_TEST(doorDetectedAnewClosesTheRing);
+  CPPUNIT_TEST(doorSeenThroughAnotherDoorClosesNothing);
   CPPUNIT_TEST(noTransitionAfterAllIsDropped);
   CPPUNIT_TEST_SUITE_END();
 
@@ -139,6 +146,57 @@ class RgMapLoopsTest : public CppUnit::TestFixture {
     feedAll(k, inputs, 0, inputs.size());
     checkRepairedRoom(k);
     CPPUNIT_ASSERT_EQUAL(std::size_t(1), k.state().gateways.begin()->second.traversalsFrom[kSideA]);
+  }
+
+  void doorDetectedAnewIsTheKnownDoor() {
+    SyntheticTour tour(rgnav::testing::hallwayWithTwoRooms(), rgnav::testing::kTourDrift);
+    tour.driveThrough({{1, 0.9}, {4, 0.9}, {4, 4.5}, {3, 5}});  // in through door 11, out of its range
+    tour.redetect(11, 111);
+    tour.driveThrough({{4, 4.5}, {4, 0.9}, {1, 0.9}});  // out again: door 111, first seen from the room
+    RgMappingKernel k;
+    feedAll(k, tour.inputs(), 0, tour.inputs().size());
+    const RgMapState& s = k.state();
+    CPPUNIT_ASSERT_EQUAL(std::size_t(2), s.regions.size());
+    CPPUNIT_ASSERT_EQUAL(std::size_t(1), s.gateways.size());
+    const Gateway& door = s.gateways.begin()->second;
+    CPPUNIT_ASSERT_EQUAL(GatewayId(11), door.record.id);
+    CPPUNIT_ASSERT(door.aliases == std::vector<DetectorGatewayId>{111});
+    CPPUNIT_ASSERT(!door.neutralised);
+    CPPUNIT_ASSERT(door.traversalsFrom[kSideA] == 1 && door.traversalsFrom[kSideB] == 1);
+    CPPUNIT_ASSERT_EQUAL(door.sides[kSideA].region, k.currentRegionId());  // back in the hallway
+  }
+
+  void doorDetectedAnewClosesTheRing() {
+    SyntheticTour tour(rgnav::testing::ringCorridor(), rgnav::testing::kTourDrift);
+    tour.driveThrough({{1.1, 1}, {9, 1}, {9, 9}, {1, 9}});
+    tour.redetect(21, 121);
+    tour.driveThrough({{1, 1}, {4.2, 1}});  // the door seen from its west side, not traversed
+    RgMappingKernel k;
+    feedAll(k, tour.inputs(), 0, tour.inputs().size());
+    const RgMapState& s = k.state();
+    CPPUNIT_ASSERT_EQUAL(std::size_t(1), s.regions.size());
+    const Gateway& door = s.gateways.begin()->second;
+    CPPUNIT_ASSERT(door.aliases == std::vector<DetectorGatewayId>{121});
+    CPPUNIT_ASSERT(door.neutralised);
+    CPPUNIT_ASSERT(happened(k, RgMapEventKind::RegionsMerged));
+  }
+
+  void doorSeenThroughAnotherDoorClosesNothing() {
+    // Room 1 split by an inner wall at y = 2.9 with door 13 above door 11.
+    rgnav::testing::TourWorld world = rgnav::testing::hallwayWithTwoRooms();
+    world.walls.push_back({{2, 2.9}, {3.55, 2.9}});
+    world.walls.push_back({{4.45, 2.9}, {6, 2.9}});
+    world.doors.push_back({13, {3.55, 2.9}, {4.45, 2.9}, DoorReports::All});
+    SyntheticTour tour(world, rgnav::testing::kTourDrift, 0.25, 1.2);
+    tour.driveThrough({{1, 0.9}, {4, 0.9}, {4, 4.6}});  // through doors 11 and 13
+    tour.redetect(11, 111);
+    // Door 11 seen again from (4, 3.1), 0.6 m from its room-side crossing point, through door 13.
+    tour.driveThrough({{4, 3.1}});
+    RgMappingKernel k;
+    feedAll(k, tour.inputs(), 0, tour.inputs().size());
+    CPPUNIT_ASSERT_EQUAL(std::size_t(3), k.state().regions.size());
+    CPPUNIT_ASSERT(!happened(k, RgMapEventKind::RegionsMerged));
+    CPPUNIT_ASSERT(k.state().gateways.at(1).aliases == std::vector<DetectorGatewayId>{111});
   }
 
   void noTransitionAfterAllIsDropped() {

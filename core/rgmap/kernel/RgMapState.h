@@ -61,6 +61,10 @@ struct Gateway {
   std::array<GatewaySideRef, 2> sides;
   std::array<std::size_t, 2> traversalsFrom{};  // traversals that started on side A / side B
   bool neutralised = false;                     // the same region on both sides (thesis 6.1.1)
+  // Further detector IDs of the same door: a track the detector started anew for a door it had
+  // reported before (its odometry drifted, or it had lost the first track); see
+  // RgMappingKernel.h. Their records are not kept: the first record stays this gateway's geometry.
+  std::vector<DetectorGatewayId> aliases;
 
   bool door() const { return record.kind == GatewayKind::NarrowPassage; }
 

@@ -1,11 +1,13 @@
 // The RG Mapping Kernel's rules; see RgMappingKernel.h.
 #include "core/rgmap/kernel/RgMappingKernel.h"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <map>
 
 #include "core/common/Errors.h"
+#include "core/gateways/passages/SegmentCrossing.h"
 #include "core/lines/ScanPoints.h"
 #include "core/rgmap/kernel/KernelInputs.h"
 #include "core/rgmap/kernel/RgMapConsistency.h"
@@ -25,6 +27,26 @@ std::size_t otherSide(std::size_t side) { return side == kSideA ? kSideB : kSide
 Pose2D crossingPose(const TraversalReport& t, const Pose2D& odomToMap) {
   const Eigen::Vector2d at = transformPoint(odomToMap, t.at);
   return {at.x(), at.y(), normalizeAngle(std::atan2(t.direction.y(), t.direction.x()) + odomToMap.theta)};
+}
+
+// Whether the sight line from the robot to crossing point `crossing` of gateway `id` passes
+// through the line of another door that is not neutralised (map frame).
+bool seenThroughAnotherDoor(const RgMapState& state, GatewayId id, const Eigen::Vector2d& robot,
+                            std::size_t crossing) {
+  const Eigen::Vector2d target = placeGateway(state.gateways.at(id)).crossingPoints[crossing];
+  for (const auto& [other, gateway] : state.gateways) {
+    if (other == id || !gateway.door() || gateway.neutralised) continue;
+    const PlacedGateway placed = placeGateway(gateway);
+    if (segmentCrossing(robot, target, placed.gatewayPoints[0], placed.gatewayPoints[1])) return true;
+  }
+  return false;
+}
+
+// Whether the robot's last traversal went through gateway `id` into `region`.
+bool lastTraversalInto(const RgMapState& state, GatewayId id, RegionId region) {
+  const auto last = std::find_if(state.events.rbegin(), state.events.rend(),
+                                 [](const RgMapEvent& e) { return e.kind == K::GatewayTraversed; });
+  return last != state.events.rend() && last->gateway == id && last->other == region;
 }
 
 }  // namespace
@@ -76,17 +98,43 @@ void RgMappingKernel::addGatewayEvent(const GatewayEvent& event, const Pose2D& l
 
 std::optional<GatewayId> RgMappingKernel::findGateway(DetectorGatewayId detectorId) const {
   for (const auto& [id, g] : state_.gateways)
-    if (g.record.id == detectorId) return id;
+    if (g.record.id == detectorId || std::find(g.aliases.begin(), g.aliases.end(), detectorId) != g.aliases.end())
+      return id;
   return std::nullopt;
+}
+
+std::optional<GatewayId> RgMappingKernel::sameDoorAs(const GatewayRecord& record, const Pose2D& odomToMap) const {
+  if (record.kind != GatewayKind::NarrowPassage) return std::nullopt;
+  Gateway seen;
+  seen.record = record;
+  seen.odomToMap = odomToMap;
+  const PlacedGateway placed = placeGateway(seen);
+  for (const auto& [id, g] : state_.gateways)
+    if (g.door() && sameDoor(placeGateway(g), placed, config_.sameDoorM)) return id;
+  return std::nullopt;
+}
+
+std::size_t RgMappingKernel::crossingOf(GatewayId id, const GatewayRecord& record, const Pose2D& odomToMap,
+                                        std::size_t k) const {
+  const Gateway& g = state_.gateways.at(id);
+  if (g.record.id == record.id) return k;
+  return nearestCrossing(placeGateway(g), transformPoint(odomToMap, record.crossingPoints.at(k)));
 }
 
 GatewayId RgMappingKernel::takeIn(const GatewayRecord& record, const Pose2D& odomToMap, bool announceUpdate,
                                   DataId scan) {
-  const std::optional<GatewayId> known = findGateway(record.id);
-  if (!known) return addGateway(state_, record, odomToMap, scan);
+  std::optional<GatewayId> known = findGateway(record.id);
+  if (!known) {
+    known = sameDoorAs(record, odomToMap);
+    if (!known) return addGateway(state_, record, odomToMap, scan);
+    state_.gateways.at(*known).aliases.push_back(record.id);
+    announceUpdate = true;
+  }
   Gateway& g = state_.gateways.at(*known);
-  g.record = record;
-  g.odomToMap = odomToMap;
+  if (g.record.id == record.id) {
+    g.record = record;
+    g.odomToMap = odomToMap;
+  }
   if (announceUpdate) emitEvent(state_, K::GatewayUpdated, 0, 0, *known, scan);
   return *known;
 }
@@ -128,7 +176,7 @@ void RgMappingKernel::observe(const GatewayEvent& event, const Pose2D& odomToMap
   }
   const GatewayId id = takeIn(record, odomToMap, event.kind == GatewayEventKind::Updated, scan);
   const std::optional<std::size_t> crossing = robotCrossing(state_.gateways.at(id), {robot.x, robot.y}, config_.sides);
-  if (!crossing) return;
+  if (!crossing || seenThroughAnotherDoor(state_, id, {robot.x, robot.y}, *crossing)) return;
   const std::optional<std::size_t> side = sideOf(id, *crossing);
   if (!side) return;
   repairMissedCrossing(id, *side, kNoScanLimit);
@@ -138,12 +186,15 @@ void RgMappingKernel::observe(const GatewayEvent& event, const Pose2D& odomToMap
 void RgMappingKernel::traverse(const GatewayEvent& event, const Pose2D& odomToMap) {
   const TraversalReport& t = event.traversal;
   const GatewayId id = takeIn(event.gateway, odomToMap, false, t.scanId);
-  const std::optional<std::size_t> from = sideOf(id, t.fromSide);
-  const std::optional<std::size_t> to = sideOf(id, t.toSide);
+  const std::optional<std::size_t> from = sideOf(id, crossingOf(id, event.gateway, odomToMap, t.fromSide));
+  const std::optional<std::size_t> to = sideOf(id, crossingOf(id, event.gateway, odomToMap, t.toSide));
   if (!from || !to) {  // through further sides of a hallway area: no structure (see the header)
     emitEvent(state_, K::GatewayTraversed, state_.current, state_.current, id, t.scanId);
     return;
   }
+  // Two tracks of one door (an alias, see the header) both report the robot passing it.
+  if (state_.gateways.at(id).sides[*to].region == state_.current && lastTraversalInto(state_, id, state_.current))
+    return;
   repairMissedCrossing(id, *from, t.scanId);
   ++state_.gateways.at(id).traversalsFrom[*from];
   const RegionId left = joinSide(id, *from, state_.current, t.scanId);

@@ -4,7 +4,15 @@
 //   - Stacking (2.2): every scan goes into the current region; its line map and preliminary
 //     description are available at any time (currentRegion()).
 //   - Detected / Updated gateway: the hypothesis is placed into the map frame (GatewayGeometry.h)
-//     and the current region is attached on the side the robot is on.
+//     and the current region is attached on the side the robot is on (GatewayGeometry.h), unless
+//     (ours) the robot sees that side's crossing point through another door's line: then it
+//     looks into the region beyond that door, which need not be its own.
+//   - A door the detector reports under a new ID where the map already has a door (the
+//     detector's odometry drifted since, or it lost the first track) is the known door seen again
+//     (6.1.1; ours: matched by position in the map frame): the new ID becomes an alias of it, and
+//     its traversals and sides are the known door's. Both tracks report the robot passing the
+//     door: a traversal into the current region right after the robot came in through the same
+//     gateway changes nothing.
 //   - Traversed gateway: the region left behind is finalised (RegionFinalised, or RegionUpdated
 //     after a revisit: its description is then computed from all its scans), and the robot enters
 //     the region on the other side: the one already known there (a revisit updates it, thesis
@@ -52,6 +60,7 @@ namespace rgnav {
 
 struct RgMappingKernelConfig {
   SideEvidenceConfig sides;
+  double sameDoorM = 0.5;  // a new detector ID whose door lies within this of a known door's is that door
   RegionModelConfig models;
   EdgeCostConfig costs;
 };
@@ -131,8 +140,13 @@ class RgMappingKernel {
   void observe(const GatewayEvent& event, const Pose2D& odomToMap, const Pose2D& robot);
   void traverse(const GatewayEvent& event, const Pose2D& odomToMap);
   std::optional<GatewayId> findGateway(DetectorGatewayId detectorId) const;
+  // A door of the map at the place of `record`'s (sameDoor within config.sameDoorM), if any.
+  std::optional<GatewayId> sameDoorAs(const GatewayRecord& record, const Pose2D& odomToMap) const;
   // The kernel's gateway for the detector's record, added or refreshed.
   GatewayId takeIn(const GatewayRecord& record, const Pose2D& odomToMap, bool announceUpdate, DataId scan);
+  // The index of gateway `id`'s crossing point that crossing point `k` of `record` names (the
+  // record may be an alias's, with its own numbering).
+  std::size_t crossingOf(GatewayId id, const GatewayRecord& record, const Pose2D& odomToMap, std::size_t k) const;
   // The side of gateway `id` with crossing point `crossing`; a hallway area's unknown side takes it.
   std::optional<std::size_t> sideOf(GatewayId id, std::size_t crossing);
   // `region` lies on side `side` of gateway `id`: attach it, or merge it with the region there.

@@ -107,6 +107,11 @@ void SyntheticTour::setReports(GatewayId detectorId, DoorReports reports) {
     if (d.door.detectorId == detectorId) d.door.reports = reports;
 }
 
+void SyntheticTour::redetect(GatewayId detectorId, GatewayId newId) {
+  for (DoorState& d : doors_)
+    if (d.door.detectorId == detectorId) d = DoorState{TourDoor{newId, d.door.left, d.door.right, d.door.reports}};
+}
+
 void SyntheticTour::driveThrough(const std::vector<Eigen::Vector2d>& waypoints) {
   for (const Eigen::Vector2d& to : waypoints) {
     if (!last_) {

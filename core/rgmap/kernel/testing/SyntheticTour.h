@@ -6,6 +6,7 @@
 //   - Detected when the robot first comes within detectRangeM of its centre, the crossing point
 //     on the robot's side first;
 //   - Updated each time the robot comes within range again after having been out of it;
+//   - Detected anew under another ID after redetect();
 //   - Traversed when two steps lie on different sides of its line and the path between them
 //     crosses it (if it was not known yet, it is reported first by this traversal).
 // Also the two worlds and tours of the kernel's tests.
@@ -64,11 +65,14 @@ RgMappingKernel mapped(const std::vector<KernelInput>& inputs, std::size_t end);
 
 class SyntheticTour {
  public:
-  SyntheticTour(TourWorld world, const Pose2D& drift, double stepM = 0.25, double detectRangeM = 2.0);
+  SyntheticTour(TourWorld world, const Pose2D& drift, double stepM = 0.25, double detectRangeM = 1.0);
 
   // Drives from the current position (the first waypoint on the first call) along `waypoints`.
   void driveThrough(const std::vector<Eigen::Vector2d>& waypoints);
   void setReports(GatewayId detectorId, DoorReports reports);
+  // The fake detector loses its track of door `detectorId` and reports the door anew, as door
+  // `newId`: Detected when the robot next comes within range, crossing point 0 on its side then.
+  void redetect(GatewayId detectorId, GatewayId newId);
 
   const std::vector<KernelInput>& inputs() const { return inputs_; }
 
