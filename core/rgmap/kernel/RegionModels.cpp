@@ -39,6 +39,22 @@ std::vector<GatewaySegment> otherDoorLines(const RgMapState& state, const Region
   return out;
 }
 
+std::vector<GatewaySegment> doorFrameLines(const RgMapState& state, const Region& region, const DoorFrameCut& cut) {
+  std::vector<GatewaySegment> out;
+  for (GatewayId id : region.gateways) {
+    const Gateway& g = state.gateways.at(id);
+    if (!g.door() || g.neutralised) continue;
+    const std::size_t own = g.sides[kSideA].region == region.id ? kSideA : kSideB;
+    const PlacedGateway placed = placeGateway(g, region.frame);
+    const Eigen::Vector2d away =
+        (placed.crossingPoints[g.sides[1 - own].crossing] - placed.crossingPoints[g.sides[own].crossing]).normalized();
+    const Eigen::Vector2d along = (placed.gatewayPoints[1] - placed.gatewayPoints[0]).normalized();
+    const Eigen::Vector2d beyond = cut.depthM * away;
+    out.push_back({placed.gatewayPoints[0] + beyond - cut.widenM * along, placed.gatewayPoints[1] + beyond + cut.widenM * along});
+  }
+  return out;
+}
+
 RegionModels::RegionModels(const RegionModelConfig& config) : config_(config) {
   // Both throw for a bad configuration (ConfigError, InvalidArgumentError), before any region needs them.
   RegionEvidence{config.evidence};
@@ -53,6 +69,8 @@ RegionModels::Model& RegionModels::upToDate(const RgMapState& state, RegionId id
   std::vector<GatewaySegment> cutting = gateways;
   const std::vector<GatewaySegment> others = otherDoorLines(state, r);
   cutting.insert(cutting.end(), others.begin(), others.end());
+  const std::vector<GatewaySegment> frames = doorFrameLines(state, r, config_.doorFrames);
+  cutting.insert(cutting.end(), frames.begin(), frames.end());
 
   auto it = models_.find(id);
   const auto keyAt = [&](std::size_t i) { return ScanKey{r.scans[i], state.scans.at(r.scans[i]).corrected}; };

@@ -1,7 +1,7 @@
 // RegionModels: the metric description M and the properties P of each region (thesis 2.1.1,
 // 5.2): its 2D line segment map (RegionLineMap) and its RegionDescription, in the region's own
 // frame, computed from the region's aligned scans and its gateway lines (GatewayGeometry.h), its
-// beams cut at every door (otherDoorLines).
+// beams cut at every door (otherDoorLines) and just beyond its own doors (doorFrameLines).
 // Both are pure functions of the map state (the region's scans in ID order with their corrected
 // poses, its frame, its gateway lines and the map's doors), so they are not part of a checkpoint:
 // a resumed kernel computes the very same ones. They are computed on demand and cached; a cached
@@ -24,11 +24,18 @@
 
 namespace rgnav {
 
+// Where doorFrameLines lie.
+struct DoorFrameCut {
+  double depthM = 0.3;   // beyond the door's line
+  double widenM = 1.0;   // longer than the door at each end
+};
+
 struct RegionModelConfig {
   LineExtractorParams extractor;
   LineMergerParams merger;
   RegionEvidenceConfig evidence;
   DescriptionParams description;
+  DoorFrameCut doorFrames;
 };
 
 // The gateway lines of `region` in its own frame: every side of its gateways that lies in it,
@@ -41,6 +48,12 @@ std::vector<GatewaySegment> regionGatewaySegments(const RgMapState& state, const
 // through doors between other regions (through an open room into the next one), and what lies
 // behind them is no part of it either.
 std::vector<GatewaySegment> otherDoorLines(const RgMapState& state, const Region& region);
+
+// The region's own doors (not neutralised) moved cut.depthM to their other side and lengthened by
+// cut.widenM at both ends, in the region's frame (ours). The robot that stands in a door frame,
+// just beyond the door's line, before the traversal, sees past that line into the next room,
+// through the door and at a slant; these lines stop its beams soon after the door.
+std::vector<GatewaySegment> doorFrameLines(const RgMapState& state, const Region& region, const DoorFrameCut& cut);
 
 class RegionModels {
  public:
@@ -64,7 +77,7 @@ class RegionModels {
   struct Model {
     Pose2D frame;
     std::vector<GatewaySegment> gateways;  // its own gateway lines
-    std::vector<GatewaySegment> cutting;   // `gateways`, then otherDoorLines: what cuts its beams
+    std::vector<GatewaySegment> cutting;   // `gateways`, otherDoorLines, doorFrameLines: what cuts its beams
     std::vector<ScanKey> scans;  // the scans in `lines` and `evidence`, in order
     RegionLineMap lines;
     RegionEvidence evidence;

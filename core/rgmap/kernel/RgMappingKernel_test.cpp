@@ -3,7 +3,7 @@
 // gateways placed from the drifting odometry frame into the map frame, scans in the region they
 // were taken in, a revisited room updated and not duplicated, region descriptions, naming,
 // merging on request, a path through the RG Graph, revised SLAM poses, bad inputs refused; beams
-// cut at every door, no robot side beside a door's ends.
+// cut at every door and just beyond the region's own doors, no robot side beside a door's ends.
 #include "core/rgmap/kernel/RgMappingKernel.h"
 
 #include <cppunit/extensions/HelperMacros.h>
@@ -13,6 +13,7 @@
 #include "core/common/Errors.h"
 #include "core/lines/ScanPoints.h"
 #include "core/rgmap/graph/RgPathSearch.h"
+#include "core/rgmap/kernel/RgMapEdits.h"
 #include "core/rgmap/kernel/testing/SyntheticTour.h"
 
 using namespace rgnav;
@@ -74,6 +75,7 @@ class RgMappingKernelTest : public CppUnit::TestFixture {
   CPPUNIT_TEST(revisitedRoomIsUpdatedNotDuplicated);
   CPPUNIT_TEST(descriptionsStayInsideTheirRooms);
   CPPUNIT_TEST(beamsAreCutAtEveryDoor);
+  CPPUNIT_TEST(beamsAreCutJustBeyondOwnDoors);
   CPPUNIT_TEST(noSideBesideAPassagesEnds);
   CPPUNIT_TEST(preliminaryDescriptionGrowsWithTheScans);
   CPPUNIT_TEST(hallwayTurnJoinsTwoRegions);
@@ -239,6 +241,27 @@ class RgMappingKernelTest : public CppUnit::TestFixture {
     CPPUNIT_ASSERT(others[0].a == door2.gatewayPoints[0] && others[0].b == door2.gatewayPoints[1]);
     // The hallway has both doors as its own gateway lines: nothing more.
     CPPUNIT_ASSERT(otherDoorLines(s, s.regions.at(kHallway)).empty());
+  }
+
+  void beamsAreCutJustBeyondOwnDoors() {
+    const RgMappingKernel k = mappedFloor();
+    const RgMapState& s = k.state();
+    const Region& room1 = s.regions.at(kRoom1);
+    // Door 1, (3.55, 2)-(4.45, 2) in the map frame, moved 0.3 m into the hallway and 1 m longer
+    // at each end.
+    const std::vector<GatewaySegment> lines = doorFrameLines(s, room1, DoorFrameCut{0.3, 1.0});
+    CPPUNIT_ASSERT_EQUAL(std::size_t(1), lines.size());
+    const Eigen::Vector2d a = transformPoint(room1.frame, lines[0].a), b = transformPoint(room1.frame, lines[0].b);
+    const Eigen::Vector2d west = a.x() < b.x() ? a : b, east = a.x() < b.x() ? b : a;
+    CPPUNIT_ASSERT((west - Eigen::Vector2d(2.55, 1.7)).norm() < 0.05);
+    CPPUNIT_ASSERT((east - Eigen::Vector2d(5.45, 1.7)).norm() < 0.05);
+    // The hallway's lines lie in the rooms; a room seen through its door from the hallway ends there.
+    for (const GatewaySegment& line : doorFrameLines(s, s.regions.at(kHallway), DoorFrameCut{0.3, 1.0}))
+      CPPUNIT_ASSERT_DOUBLES_EQUAL(2.3, transformPoint(s.regions.at(kHallway).frame, line.a).y(), 0.05);
+    // A neutralised door cuts nothing.
+    RgMapState merged = s;
+    mergeRegions(merged, kHallway, kRoom1, s.lastScanId);
+    CPPUNIT_ASSERT_EQUAL(std::size_t(1), doorFrameLines(merged, merged.regions.at(kHallway), DoorFrameCut{}).size());
   }
 
   void noSideBesideAPassagesEnds() {

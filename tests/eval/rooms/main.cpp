@@ -154,6 +154,12 @@ int main(int argc, char** argv) {
       ("side-range", po::value(&options.setup.pipeline.kernel.sides.rangeM)
            ->default_value(options.setup.pipeline.kernel.sides.rangeM, shown(options.setup.pipeline.kernel.sides.rangeM)),
        "kernel: farthest robot distance from a crossing point that decides its side, m")
+      ("door-frame", po::value(&options.setup.pipeline.kernel.models.doorFrames.depthM)
+           ->default_value(options.setup.pipeline.kernel.models.doorFrames.depthM, shown(options.setup.pipeline.kernel.models.doorFrames.depthM)),
+       "kernel: beams are also cut this far beyond a region's own doors, m")
+      ("door-frame-widen", po::value(&options.setup.pipeline.kernel.models.doorFrames.widenM)
+           ->default_value(options.setup.pipeline.kernel.models.doorFrames.widenM, shown(options.setup.pipeline.kernel.models.doorFrames.widenM)),
+       "kernel: ... along a line this much longer than the door at each end, m")
       ("sim-config", po::value(&options.simConfig), "simulator parameters (config/sim/*.yaml); default: built-in")
       ("seed", po::value(&options.setup.simulation.seed)->default_value(options.setup.simulation.seed),
        "simulation seed")
