@@ -32,7 +32,9 @@ std::vector<GatewaySegment> otherDoorLines(const RgMapState& state, const Region
   for (const auto& [id, gateway] : state.gateways) {
     const bool own = std::any_of(gateway.sides.begin(), gateway.sides.end(),
                                  [&](const GatewaySideRef& side) { return side.region == region.id; });
-    if (!gateway.door() || gateway.neutralised || own) continue;
+    const bool attached = std::any_of(gateway.sides.begin(), gateway.sides.end(),
+                                      [](const GatewaySideRef& side) { return side.region != 0; });
+    if (!gateway.door() || gateway.neutralised || own || !attached) continue;
     const PlacedGateway placed = placeGateway(gateway, region.frame);
     out.push_back({placed.gatewayPoints[0], placed.gatewayPoints[1]});
   }

@@ -1,7 +1,8 @@
 // RegionModels: the metric description M and the properties P of each region (thesis 2.1.1,
 // 5.2): its 2D line segment map (RegionLineMap) and its RegionDescription, in the region's own
 // frame, computed from the region's aligned scans and its gateway lines (GatewayGeometry.h), its
-// beams cut at every door (otherDoorLines) and just beyond its own doors (doorFrameLines).
+// beams cut at the doors other regions lie at (otherDoorLines) and just beyond its own doors
+// (doorFrameLines).
 // Both are pure functions of the map state (the region's scans in ID order with their corrected
 // poses, its frame, its gateway lines and the map's doors), so they are not part of a checkpoint:
 // a resumed kernel computes the very same ones. They are computed on demand and cached; a cached
@@ -42,11 +43,15 @@ struct RegionModelConfig {
 // by gateway ID and side.
 std::vector<GatewaySegment> regionGatewaySegments(const RgMapState& state, const Region& region);
 
-// The lines of every door that is not neutralised and not the region's own, in the region's
-// frame. With the region's own gateway lines they cut its beams (thesis 5.2: "laser beams that
-// cross a gateway are filtered out"; ours: every door, not only its own): a region also sees
-// through doors between other regions (through an open room into the next one), and what lies
-// behind them is no part of it either.
+// The lines of every door that is not neutralised, not the region's own and has a region on a
+// side, in the region's frame. With the region's own gateway lines they cut its beams (thesis
+// 5.2: "laser beams that cross a gateway are filtered out"; ours: every such door, not only its
+// own): a region also sees through doors between other regions (through an open room into the
+// next one), and what lies behind them is no part of it either. A door no region was ever
+// attached to (neither passed nor observed from near by) is left out: most of them are no doors
+// (gaps between furniture, a partition's end and a far corner), and cutting at them took the
+// floor behind them from every region (rgnav-eval-rooms, ten maps: recall mean 0.789 -> 0.829,
+// precision mean 0.879 -> 0.862; open cubicles of lab_a 0.655 -> 0.875).
 std::vector<GatewaySegment> otherDoorLines(const RgMapState& state, const Region& region);
 
 // The region's own doors (not neutralised) moved cut.depthM to their other side and lengthened by

@@ -3,7 +3,8 @@
 // gateways placed from the drifting odometry frame into the map frame, scans in the region they
 // were taken in, a revisited room updated and not duplicated, region descriptions, naming,
 // merging on request, a path through the RG Graph, revised SLAM poses, bad inputs refused; beams
-// cut at every door and just beyond the region's own doors, no robot side beside a door's ends.
+// cut at every door with a region on a side and just beyond the region's own doors, no robot
+// side beside a door's ends.
 #include "core/rgmap/kernel/RgMappingKernel.h"
 
 #include <cppunit/extensions/HelperMacros.h>
@@ -241,6 +242,11 @@ class RgMappingKernelTest : public CppUnit::TestFixture {
     CPPUNIT_ASSERT(others[0].a == door2.gatewayPoints[0] && others[0].b == door2.gatewayPoints[1]);
     // The hallway has both doors as its own gateway lines: nothing more.
     CPPUNIT_ASSERT(otherDoorLines(s, s.regions.at(kHallway)).empty());
+    // A door no region was attached to cuts nothing.
+    RgMapState unattached = s;
+    unattached.gateways.at(kDoor2).sides[kSideA].region = 0;
+    unattached.gateways.at(kDoor2).sides[kSideB].region = 0;
+    CPPUNIT_ASSERT(otherDoorLines(unattached, room1).empty());
   }
 
   void beamsAreCutJustBeyondOwnDoors() {
