@@ -168,10 +168,13 @@ void RgMappingKernel::observe(const GatewayEvent& event, const Pose2D& odomToMap
     const std::optional<GatewayId> known = findGateway(record.id);
     if (!known) return;
     const Gateway& g = state_.gateways.at(*known);
-    if (g.traversalsFrom[kSideA] + g.traversalsFrom[kSideB] == 0)
+    if (g.traversalsFrom[kSideA] + g.traversalsFrom[kSideB] == 0) {
       dropGateway(state_, *known, scan);
-    else
-      takeIn(record, odomToMap, true, scan);
+      return;
+    }
+    takeIn(record, odomToMap, true, scan);
+    const RegionId a = g.sides[kSideA].region, b = g.sides[kSideB].region;
+    if (a != 0 && b != 0 && a != b) rgnav::mergeRegions(state_, a, b, scan);
     return;
   }
   const GatewayId id = takeIn(record, odomToMap, event.kind == GatewayEventKind::Updated, scan);

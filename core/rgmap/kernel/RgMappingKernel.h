@@ -40,7 +40,8 @@
 // ScanMapper does). A hallway area joins at most two regions here: the side the robot first saw
 // it from and the first other side it was traversed to or seen from; traversals and
 // observations through its further sides change no structure. Labels that are no transition
-// (Deadend, Hallway) drop a gateway that was never traversed and are kept as a label otherwise.
+// (Deadend, Hallway) drop a gateway that was never traversed; one that was traversed keeps the
+// label and joins nothing: the regions on its two sides are merged (it is neutralised).
 // The final description is computed when first asked for (a checkpoint does not hold it), not at
 // finalisation, so that a region that cannot be described never blocks the structuring.
 #pragma once

@@ -1,10 +1,10 @@
 // Tests the RG Mapping Kernel's online structuring (thesis 2.2, 5.2) on a synthetic floor, a
 // hallway with two rooms behind doors: three regions and two gateways with references both ways,
 // gateways placed from the drifting odometry frame into the map frame, scans in the region they
-// were taken in, a revisited room updated and not duplicated, region descriptions, naming,
-// merging on request, a path through the RG Graph, revised SLAM poses, bad inputs refused; beams
-// cut at every door with a region on a side and just beyond the region's own doors, no robot
-// side beside a door's ends.
+// were taken in, a traversed turn that turns out to be a hallway merging its regions, a revisited
+// room updated and not duplicated, region descriptions, naming, merging on request, a path
+// through the RG Graph, revised SLAM poses, bad inputs refused; beams cut at every door with a
+// region on a side and just beyond the region's own doors, no robot side beside a door's ends.
 #include "core/rgmap/kernel/RgMappingKernel.h"
 
 #include <cppunit/extensions/HelperMacros.h>
@@ -229,6 +229,14 @@ class RgMappingKernelTest : public CppUnit::TestFixture {
     CPPUNIT_ASSERT_EQUAL(std::size_t(2), k.state().regions.size());
     CPPUNIT_ASSERT_EQUAL(RegionId(2), k.currentRegionId());
     CPPUNIT_ASSERT_EQUAL(RgMapEventKind::GatewayTraversed, k.state().events.back().kind);
+    // More views say it is no turn: the hallway goes on, the two regions are one.
+    GatewayEvent hallway = cornerEvent(4, GatewayEventKind::Updated, last);
+    hallway.gateway.classes = {{"Hallway", 0.9}, {"L-Turn", 0.1}};
+    k.addGatewayEvent(hallway, last.corrected);
+    CPPUNIT_ASSERT_EQUAL(std::size_t(1), k.state().regions.size());
+    CPPUNIT_ASSERT_EQUAL(RegionId(1), k.currentRegionId());
+    CPPUNIT_ASSERT(k.state().gateways.at(1).neutralised);
+    CPPUNIT_ASSERT_EQUAL(std::string(), joinedViolations(k));
   }
 
   void beamsAreCutAtEveryDoor() {
