@@ -59,6 +59,8 @@ std::vector<GatewaySegment> doorFrameLines(const RgMapState& state, const Region
 
 RegionModels::RegionModels(const RegionModelConfig& config) : config_(config) {
   // Both throw for a bad configuration (ConfigError, InvalidArgumentError), before any region needs them.
+  if (!(config.doorFrames.depthM >= 0.0) || !(config.doorFrames.widenM >= 0.0))
+    throw ConfigError("region models: door frame depth and widening must be >= 0");
   RegionEvidence{config.evidence};
   RegionLineMap{config.extractor, config.merger};
 }

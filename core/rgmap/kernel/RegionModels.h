@@ -62,6 +62,8 @@ std::vector<GatewaySegment> doorFrameLines(const RgMapState& state, const Region
 
 class RegionModels {
  public:
+  // Throws ConfigError for a negative door frame depth or widening (and as RegionEvidence and
+  // RegionLineMap do for theirs).
   explicit RegionModels(const RegionModelConfig& config = {});
 
   // The line map / description of region `id` of `state`. Throws NotAvailableError for an unknown
