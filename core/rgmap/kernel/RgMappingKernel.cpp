@@ -189,6 +189,10 @@ void RgMappingKernel::observe(const GatewayEvent& event, const Pose2D& odomToMap
 void RgMappingKernel::traverse(const GatewayEvent& event, const Pose2D& odomToMap) {
   const TraversalReport& t = event.traversal;
   const GatewayId id = takeIn(event.gateway, odomToMap, false, t.scanId);
+  if (!state_.gateways.at(id).door() && event.gateway.support < config_.minAreaSequences) {
+    emitEvent(state_, K::GatewayTraversed, state_.current, state_.current, id, t.scanId);
+    return;
+  }
   const std::optional<std::size_t> from = sideOf(id, crossingOf(id, event.gateway, odomToMap, t.fromSide));
   const std::optional<std::size_t> to = sideOf(id, crossingOf(id, event.gateway, odomToMap, t.toSide));
   if (!from || !to) {  // through further sides of a hallway area: no structure (see the header)

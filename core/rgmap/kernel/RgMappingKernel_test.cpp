@@ -1,10 +1,11 @@
 // Tests the RG Mapping Kernel's online structuring (thesis 2.2, 5.2) on a synthetic floor, a
 // hallway with two rooms behind doors: three regions and two gateways with references both ways,
 // gateways placed from the drifting odometry frame into the map frame, scans in the region they
-// were taken in, a traversed turn that turns out to be a hallway merging its regions, a revisited
-// room updated and not duplicated, region descriptions, naming, merging on request, a path
-// through the RG Graph, revised SLAM poses, bad inputs refused; beams cut at every door with a
-// region on a side and just beyond the region's own doors, no robot side beside a door's ends.
+// were taken in, a turn joining regions once two sequences support it and merging them again when
+// it turns out to be a hallway, a revisited room updated and not duplicated, region descriptions,
+// naming, merging on request, a path through the RG Graph, revised SLAM poses, bad inputs
+// refused; beams cut at every door with a region on a side and just beyond the region's own
+// doors, no robot side beside a door's ends.
 #include "core/rgmap/kernel/RgMappingKernel.h"
 
 #include <cppunit/extensions/HelperMacros.h>
@@ -46,9 +47,9 @@ std::size_t countEvents(const RgMappingKernel& k, RgMapEventKind kind, RegionId 
 // A hallway-area gateway at the south-east corner of ringCorridor() (the square x in [8, 10],
 // y in [0, 2]) as the detector reports it to a robot coming from the west: corners hidden-left,
 // front-left, front-right, hidden-right; crossing points hidden, left, front, right; all in the
-// tours' odometry frame.
+// tours' odometry frame, supported by `sequences` observation sequences.
 GatewayEvent cornerEvent(GatewayEventId id, GatewayEventKind kind, const StoredScan& at, std::size_t from = 0,
-                         std::size_t to = 1) {
+                         std::size_t to = 1, std::size_t sequences = 2) {
   const auto odom = [](double x, double y) { return transformPoint(rgnav::testing::kTourDrift, {x, y}); };
   GatewayEvent e;
   e.id = id;
@@ -60,6 +61,7 @@ GatewayEvent cornerEvent(GatewayEventId id, GatewayEventKind kind, const StoredS
   r.gatewayPoints = {odom(8, 2), odom(10, 2), odom(10, 0), odom(8, 0)};
   r.crossingPoints = {odom(7.5, 1), odom(9, 2.5), odom(10.5, 1), odom(9, -0.5)};
   r.widthM = 2.0;
+  r.support = sequences;
   r.firstScan = r.lastScan = at.scan.id;
   r.lastPose = at.scan.odometry;
   e.traversal = {at.scan.id, from, to, odom(at.corrected.x, at.corrected.y), Eigen::Vector2d::UnitY()};
@@ -201,7 +203,10 @@ class RgMappingKernelTest : public CppUnit::TestFixture {
         detected = true;
       }
       if (!traversed && at.corrected.y > 2.0) {
-        k.addGatewayEvent(cornerEvent(2, GatewayEventKind::Traversed, at), at.corrected);
+        // Seen in one sequence only, the turn joins no regions yet; in two, it does.
+        k.addGatewayEvent(cornerEvent(2, GatewayEventKind::Traversed, at, 0, 1, 1), at.corrected);
+        CPPUNIT_ASSERT_EQUAL(std::size_t(1), k.state().regions.size());
+        k.addGatewayEvent(cornerEvent(3, GatewayEventKind::Traversed, at), at.corrected);
         traversed = true;
       }
       CPPUNIT_ASSERT_EQUAL(std::string(), joinedViolations(k));
@@ -225,12 +230,12 @@ class RgMappingKernelTest : public CppUnit::TestFixture {
     CPPUNIT_ASSERT((graph.nodes()[1].position - Eigen::Vector2d(9, 2.5)).norm() < 1e-9);
     // Through two further sides of the square: recorded, but no structure changes.
     const StoredScan& last = *tour.inputs().back().scan;
-    k.addGatewayEvent(cornerEvent(3, GatewayEventKind::Traversed, last, 2, 3), last.corrected);
+    k.addGatewayEvent(cornerEvent(4, GatewayEventKind::Traversed, last, 2, 3), last.corrected);
     CPPUNIT_ASSERT_EQUAL(std::size_t(2), k.state().regions.size());
     CPPUNIT_ASSERT_EQUAL(RegionId(2), k.currentRegionId());
     CPPUNIT_ASSERT_EQUAL(RgMapEventKind::GatewayTraversed, k.state().events.back().kind);
     // More views say it is no turn: the hallway goes on, the two regions are one.
-    GatewayEvent hallway = cornerEvent(4, GatewayEventKind::Updated, last);
+    GatewayEvent hallway = cornerEvent(5, GatewayEventKind::Updated, last);
     hallway.gateway.classes = {{"Hallway", 0.9}, {"L-Turn", 0.1}};
     k.addGatewayEvent(hallway, last.corrected);
     CPPUNIT_ASSERT_EQUAL(std::size_t(1), k.state().regions.size());
