@@ -53,6 +53,7 @@ bool lastTraversalInto(const RgMapState& state, GatewayId id, RegionId region) {
 
 RgMappingKernel::RgMappingKernel(const RgMappingKernelConfig& config) : config_(config), models_(config.models) {
   validate(config.costs);
+  if (!(config.sameDoorM >= 0.0)) throw ConfigError("RG mapping kernel: sameDoorM must be >= 0");
 }
 
 RgMappingKernel::RgMappingKernel(const RgMappingKernelConfig& config, RgMapState state) : RgMappingKernel(config) {

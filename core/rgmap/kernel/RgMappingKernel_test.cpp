@@ -388,6 +388,9 @@ class RgMappingKernelTest : public CppUnit::TestFixture {
     RgMappingKernelConfig badFrames;
     badFrames.models.doorFrames.depthM = -0.1;
     CPPUNIT_ASSERT_THROW(RgMappingKernel{badFrames}, ConfigError);
+    RgMappingKernelConfig badDoorMatch;
+    badDoorMatch.sameDoorM = -1.0;
+    CPPUNIT_ASSERT_THROW(RgMappingKernel{badDoorMatch}, ConfigError);
     RgMappingKernel k;
     const std::vector<rgnav::testing::KernelInput> inputs = twoRoomTour().inputs();
     CPPUNIT_ASSERT_EQUAL(std::string(), feedChecked(k, inputs, 0, 20));
