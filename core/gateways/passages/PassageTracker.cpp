@@ -8,6 +8,7 @@
 #include <utility>
 
 #include "core/common/Errors.h"
+#include "core/gateways/passages/PassageEndsDistance.h"
 #include "core/gateways/passages/SegmentCrossing.h"
 
 namespace rgnav {
@@ -70,13 +71,11 @@ void PassageTracker::associate(const PassageHypothesis& h, const Pose2D& robotPo
   double bestCost = config_.associationDistanceM;
   for (PassageTrackState& t : state_.tracks) {
     const TrackedGateway& g = t.gateway;
-    const double straight = std::max((h.left - g.left).norm(), (h.right - g.right).norm());
-    const double swapped = std::max((h.left - g.right).norm(), (h.right - g.left).norm());
-    const double cost = std::min(straight, swapped);
-    if (cost <= bestCost) {
+    const PassageEndsDistance d = passageEndsDistance(h.left, h.right, g.left, g.right);
+    if (d.distanceM <= bestCost) {
       best = &t;
-      bestCost = cost;
-      bestSwapped = swapped < straight;
+      bestCost = d.distanceM;
+      bestSwapped = d.swapped;
     }
   }
   if (!best) {

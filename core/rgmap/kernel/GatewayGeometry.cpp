@@ -44,13 +44,6 @@ PlacedGateway placeGateway(const Gateway& gateway, const Pose2D& frame) {
   return out;
 }
 
-bool sameDoor(const PlacedGateway& a, const PlacedGateway& b, double toleranceM) {
-  const auto near = [&](std::size_t i, std::size_t j) {
-    return (a.gatewayPoints[i] - b.gatewayPoints[j]).norm() <= toleranceM;
-  };
-  return (near(0, 0) && near(1, 1)) || (near(0, 1) && near(1, 0));
-}
-
 std::size_t nearestCrossing(const PlacedGateway& placed, const Eigen::Vector2d& p) {
   const std::vector<Eigen::Vector2d>& c = placed.crossingPoints;
   std::size_t nearest = 0;

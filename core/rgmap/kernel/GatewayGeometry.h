@@ -53,10 +53,6 @@ struct PlacedGateway {
 // The gateway's points in `frame` (a pose in the map frame; the identity gives the map frame).
 PlacedGateway placeGateway(const Gateway& gateway, const Pose2D& frame = {});
 
-// Whether two placed narrow passages are one door: their gateway points lie within toleranceM of
-// each other, in either order (a door seen from its other side has them swapped).
-bool sameDoor(const PlacedGateway& a, const PlacedGateway& b, double toleranceM);
-
 // The index of the crossing point of `placed` nearest to `p`.
 std::size_t nearestCrossing(const PlacedGateway& placed, const Eigen::Vector2d& p);
 

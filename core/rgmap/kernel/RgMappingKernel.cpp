@@ -7,6 +7,7 @@
 #include <map>
 
 #include "core/common/Errors.h"
+#include "core/gateways/passages/PassageEndsDistance.h"
 #include "core/gateways/passages/SegmentCrossing.h"
 #include "core/lines/ScanPoints.h"
 #include "core/rgmap/kernel/KernelInputs.h"
@@ -110,9 +111,20 @@ std::optional<GatewayId> RgMappingKernel::sameDoorAs(const GatewayRecord& record
   seen.record = record;
   seen.odomToMap = odomToMap;
   const PlacedGateway placed = placeGateway(seen);
-  for (const auto& [id, g] : state_.gateways)
-    if (g.door() && sameDoor(placeGateway(g), placed, config_.sameDoorM)) return id;
-  return std::nullopt;
+  std::optional<GatewayId> nearest;
+  double nearestM = config_.sameDoorM;
+  for (const auto& [id, g] : state_.gateways) {
+    if (!g.door()) continue;
+    const PlacedGateway known = placeGateway(g);
+    const double d = passageEndsDistance(known.gatewayPoints[0], known.gatewayPoints[1], placed.gatewayPoints[0],
+                                         placed.gatewayPoints[1])
+                         .distanceM;
+    if (d <= nearestM) {
+      nearest = id;
+      nearestM = d;
+    }
+  }
+  return nearest;
 }
 
 std::size_t RgMappingKernel::crossingOf(GatewayId id, const GatewayRecord& record, const Pose2D& odomToMap,

@@ -146,7 +146,8 @@ class RgMappingKernel {
   void observe(const GatewayEvent& event, const Pose2D& odomToMap, const Pose2D& robot);
   void traverse(const GatewayEvent& event, const Pose2D& odomToMap);
   std::optional<GatewayId> findGateway(DetectorGatewayId detectorId) const;
-  // A door of the map at the place of `record`'s (sameDoor within config.sameDoorM), if any.
+  // The door of the map nearest to `record`'s, if its gateway points lie within config.sameDoorM
+  // (passageEndsDistance).
   std::optional<GatewayId> sameDoorAs(const GatewayRecord& record, const Pose2D& odomToMap) const;
   // The kernel's gateway for the detector's record, added or refreshed.
   GatewayId takeIn(const GatewayRecord& record, const Pose2D& odomToMap, bool announceUpdate, DataId scan);
