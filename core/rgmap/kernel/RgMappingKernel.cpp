@@ -10,6 +10,7 @@
 #include "core/gateways/passages/PassageEndsDistance.h"
 #include "core/gateways/passages/SegmentCrossing.h"
 #include "core/lines/ScanPoints.h"
+#include "core/rgmap/kernel/DoorSeparation.h"
 #include "core/rgmap/kernel/KernelInputs.h"
 #include "core/rgmap/kernel/RgMapConsistency.h"
 #include "core/rgmap/kernel/RgMapEdits.h"
@@ -54,6 +55,7 @@ bool lastTraversalInto(const RgMapState& state, GatewayId id, RegionId region) {
 
 RgMappingKernel::RgMappingKernel(const RgMappingKernelConfig& config) : config_(config), models_(config.models) {
   validate(config.costs);
+  validate(config.separation);
   if (!(config.sameDoorM >= 0.0)) throw ConfigError("RG mapping kernel: sameDoorM must be >= 0");
 }
 
@@ -217,6 +219,12 @@ void RgMappingKernel::traverse(const GatewayEvent& event, const Pose2D& odomToMa
     return;
   repairMissedCrossing(id, *from, t.scanId);
   ++state_.gateways.at(id).traversalsFrom[*from];
+  if (state_.gateways.at(id).door() && !separatesSpace(state_, id, config_.separation)) {
+    const RegionId here = joinSide(id, *from, state_.current, t.scanId);
+    joinSide(id, *to, here, t.scanId);
+    emitEvent(state_, K::GatewayTraversed, state_.current, state_.current, id, t.scanId);
+    return;
+  }
   const RegionId left = joinSide(id, *from, state_.current, t.scanId);
   RegionId entered = state_.gateways.at(id).sides[*to].region;
   if (entered == left) {  // a neutralised gateway: the robot stays where it is
