@@ -14,10 +14,11 @@
 
 namespace rgnav {
 
-void writeFileAtomically(const std::string& path, const std::string& content) {
-  const std::string temp = path + ".tmp." + std::to_string(::getpid());
-  const int fd = ::open(temp.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
-  if (fd < 0) throw FileError(temp + ": cannot create: " + std::strerror(errno));
+namespace {
+
+// Writes all of `content` to `fd` and fsyncs it; closes `fd` in any case. Returns 0 or the errno
+// of the step that failed, with that step's name in `step`.
+int writeAllAndSync(int fd, const std::string& content, const char*& step) {
   std::size_t written = 0;
   while (written < content.size()) {
     const ssize_t n = ::write(fd, content.data() + written, content.size() - written);
@@ -25,21 +26,41 @@ void writeFileAtomically(const std::string& path, const std::string& content) {
       if (errno == EINTR) continue;
       const int err = errno;
       ::close(fd);
-      ::unlink(temp.c_str());
-      throw FileError(temp + ": cannot write: " + std::strerror(err));
+      step = "write";
+      return err;
     }
     written += static_cast<std::size_t>(n);
   }
-  if (::fsync(fd) != 0 || ::close(fd) != 0) {
-    const int err = errno;
+  const int synced = ::fsync(fd) == 0 ? 0 : errno;
+  const int closed = ::close(fd) == 0 ? 0 : errno;
+  step = "sync";
+  return synced != 0 ? synced : closed;
+}
+
+}  // namespace
+
+void writeFileAtomically(const std::string& path, const std::string& content) {
+  const std::string temp = path + ".tmp." + std::to_string(::getpid());
+  const int fd = ::open(temp.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
+  if (fd < 0) throw FileError(temp + ": cannot create: " + std::strerror(errno));
+  const char* step = "";
+  if (const int err = writeAllAndSync(fd, content, step); err != 0) {
     ::unlink(temp.c_str());
-    throw FileError(temp + ": cannot sync: " + std::strerror(err));
+    throw FileError(temp + ": cannot " + step + ": " + std::strerror(err));
   }
   if (::rename(temp.c_str(), path.c_str()) != 0) {
     const int err = errno;
     ::unlink(temp.c_str());
     throw FileError(path + ": cannot replace: " + std::strerror(err));
   }
+}
+
+void appendToFileDurably(const std::string& path, const std::string& content) {
+  const int fd = ::open(path.c_str(), O_WRONLY | O_CREAT | O_APPEND | O_CLOEXEC, 0644);
+  if (fd < 0) throw FileError(path + ": cannot open for appending: " + std::strerror(errno));
+  const char* step = "";
+  if (const int err = writeAllAndSync(fd, content, step); err != 0)
+    throw FileError(path + ": cannot " + step + ": " + std::strerror(err));
 }
 
 std::optional<std::string> readCheckpoint(const std::string& path) {

@@ -1,6 +1,7 @@
 // writeFileAtomically: replaces a file's content so that readers see either the old or the new
 // content, never a part (DESIGN.md "State survives": write a temporary file, fsync, rename);
-// readCheckpoint reads such a file back.
+// appendToFileDurably: adds to the end of a journal and fsyncs (a crash may leave a part of the
+// last append, which the journal's reader must ignore); readCheckpoint reads such a file back.
 #pragma once
 
 #include <optional>
@@ -10,6 +11,8 @@ namespace rgnav {
 
 // Throws FileError naming the path if any step fails.
 void writeFileAtomically(const std::string& path, const std::string& content);
+// Creates the file if it does not exist. Throws FileError naming the path if any step fails.
+void appendToFileDurably(const std::string& path, const std::string& content);
 
 // The whole content of `path`; nullopt for an empty path or a file that does not exist. Throws
 // FileError if it exists but cannot be read.

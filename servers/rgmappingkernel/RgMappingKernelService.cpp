@@ -11,14 +11,24 @@ namespace {
 
 constexpr DataId kPoseChunk = 5000;  // poses asked per call when the ScanMapper revised them
 
+// The scan journal beside the checkpoint file (RgMapCodec.h).
+std::string journalOf(const std::string& checkpointFile) { return checkpointFile + ".scans"; }
+
 RgMapState loadCheckpoint(const std::string& file) {
   const std::optional<std::string> saved = readCheckpoint(file);
   if (!saved) return {};
   try {
-    return deserializeRgMap(*saved);
+    return deserializeRgMap(*saved, readCheckpoint(journalOf(file)).value_or(""));
   } catch (const FormatError& e) {
     throw FormatError(file, 0, e.what());
   }
+}
+
+// The scan journal with exactly the scans of `state`: what a crash appended ahead of the map goes.
+void rewriteJournal(const std::string& checkpointFile, const RgMapState& state) {
+  std::string lines;
+  for (const auto& [id, stored] : state.scans) lines += scanJournalLine(stored.scan);
+  writeFileAtomically(journalOf(checkpointFile), lines);
 }
 
 }  // namespace
@@ -34,6 +44,7 @@ RgMappingKernelService::RgMappingKernelService(const RgMappingKernelConfig& conf
       follower_(health, "inputs", [this] { return followOnce(); }) {
   checkpointedScan_ = kernel_->state().lastScanId;
   checkpointedEvent_ = kernel_->state().events.empty() ? 0 : kernel_->state().events.back().id;
+  if (!options_.checkpointFile.empty()) rewriteJournal(options_.checkpointFile, kernel_->state());
   health_.set("resumed_after_scan", checkpointedScan_);
   health_.set("resumed_after_gateway_event", kernel_->state().lastGatewayEventId);
 }
@@ -147,7 +158,12 @@ bool RgMappingKernelService::followOnce() {
 void RgMappingKernelService::checkpoint() {
   if (options_.checkpointFile.empty()) return;
   try {
-    writeFileAtomically(options_.checkpointFile, serializeRgMap(kernel_->state()));
+    const RgMapState& state = kernel_->state();
+    std::string newScans;
+    for (auto s = state.scans.upper_bound(checkpointedScan_); s != state.scans.end(); ++s)
+      newScans += scanJournalLine(s->second.scan);
+    if (!newScans.empty()) appendToFileDurably(journalOf(options_.checkpointFile), newScans);
+    writeFileAtomically(options_.checkpointFile, serializeRgMap(state));
     checkpointedScan_ = kernel_->state().lastScanId;
     checkpointedEvent_ = kernel_->state().events.empty() ? 0 : kernel_->state().events.back().id;
     health_.clearError("checkpoint");

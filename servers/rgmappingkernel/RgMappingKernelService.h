@@ -4,8 +4,10 @@
 // (GatewayEvent::scanId) - so that the map is the same however the modules' timing falls. When
 // the ScanMapper revises its poses (a new revision), the kernel gets the new poses of all its
 // scans. It checkpoints the map atomically after every batch that changed its structure and
-// at least every `checkpointScans` scans, and at the end; after a restart it resumes after
-// the last scan and event the checkpoint holds.
+// at least every `checkpointScans` scans, and at the end, with the scans' laser data in a journal
+// beside it (`checkpointFile`.scans, RgMapCodec.h): each checkpoint appends the new scans to the
+// journal, then replaces the map. After a restart it resumes after the last scan and event the
+// checkpoint holds.
 #pragma once
 
 #include <deque>
@@ -20,7 +22,7 @@
 namespace rgnav {
 
 struct RgMappingKernelServiceOptions {
-  std::string checkpointFile;         // empty: no checkpoints
+  std::string checkpointFile;         // empty: no checkpoints; the scan journal lies beside it
   std::uint32_t fetchBatch = 100;     // records asked from each input per call
   std::size_t checkpointScans = 500;  // at most this many scans between checkpoints
 };

@@ -3,6 +3,7 @@
 
 #include <charconv>
 #include <cmath>
+#include <map>
 #include <nlohmann/json.hpp>
 
 #include "core/common/Errors.h"
@@ -17,7 +18,7 @@ namespace {
 using nlohmann::json;
 
 constexpr const char* kFormat = "rgnav-rg-map";
-constexpr int kVersion = 2;
+constexpr int kVersion = 3;
 
 [[noreturn]] void damaged(const std::string& what) { throw FormatError("<checkpoint>", 0, what); }
 
@@ -84,8 +85,7 @@ Region region(const json& j) {
           j.at("finalised").get<bool>()};
 }
 
-json scan(const StoredScan& s) {
-  const LaserScan& l = s.scan;
+json laser(const LaserScan& l) {
   return {{"id", l.id},
           {"stamp", jsonNumber(l.stamp)},
           {"odometry", jsonPose(l.odometry)},
@@ -93,12 +93,10 @@ json scan(const StoredScan& s) {
           {"startAngle", jsonNumber(l.startAngle)},
           {"increment", jsonNumber(l.angleIncrement)},
           {"maxRange", jsonNumber(l.maxRange)},
-          {"ranges", list(l.ranges, [](float r) { return range(r); })},
-          {"corrected", jsonPose(s.corrected)}};
+          {"ranges", list(l.ranges, [](float r) { return range(r); })}};
 }
-StoredScan scan(const json& j) {
-  StoredScan s;
-  LaserScan& l = s.scan;
+LaserScan laser(const json& j) {
+  LaserScan l;
   l.id = j.at("id").get<DataId>();
   l.stamp = numberFrom(j.at("stamp"));
   l.odometry = poseFrom(j.at("odometry"));
@@ -107,8 +105,22 @@ StoredScan scan(const json& j) {
   l.angleIncrement = numberFrom(j.at("increment"));
   l.maxRange = numberFrom(j.at("maxRange"));
   for (const json& r : j.at("ranges")) l.ranges.push_back(static_cast<float>(numberFrom(r)));
-  s.corrected = poseFrom(j.at("corrected"));
-  return s;
+  return l;
+}
+
+// The complete lines of a scan journal (a part of a line after the last newline is what a crash
+// left of an append) by scan ID; of two lines for one ID the later one.
+std::map<DataId, LaserScan> journalScans(const std::string& journal) {
+  std::map<DataId, LaserScan> scans;
+  std::size_t begin = 0;
+  for (std::size_t end = journal.find('\n'); end != std::string::npos; begin = end + 1, end = journal.find('\n', begin)) {
+    if (end == begin) continue;
+    LaserScan l = laser(json::parse(journal.begin() + static_cast<std::ptrdiff_t>(begin),
+                                    journal.begin() + static_cast<std::ptrdiff_t>(end)));
+    const DataId id = l.id;
+    scans.insert_or_assign(id, std::move(l));
+  }
+  return scans;
 }
 
 json event(const RgMapEvent& e) {
@@ -177,15 +189,20 @@ std::string serializeRgMap(const RgMapState& s) {
                   {"lastGatewayEventId", s.lastGatewayEventId},
                   {"regions", list(s.regions, [](const auto& r) { return region(r.second); })},
                   {"gateways", list(s.gateways, [](const auto& g) { return gateway(g.second); })},
-                  {"scans", list(s.scans, [](const auto& sc) { return scan(sc.second); })},
+                  {"scans", list(s.scans, [](const auto& sc) {
+                     return json{{"id", sc.first}, {"corrected", jsonPose(sc.second.corrected)}};
+                   })},
                   {"events", list(s.events, [](const RgMapEvent& e) { return event(e); })},
                   {"costs", costs(s)}};
   return j.dump();
 }
 
-RgMapState deserializeRgMap(const std::string& text) {
+std::string scanJournalLine(const LaserScan& scan) { return laser(scan).dump() + "\n"; }
+
+RgMapState deserializeRgMap(const std::string& text, const std::string& journal) {
   RgMapState s;
   try {
+    std::map<DataId, LaserScan> lasers = journalScans(journal);
     const json j = json::parse(text);
     if (j.at("format") != kFormat) damaged("not an RG map checkpoint");
     if (j.at("version") != kVersion)
@@ -203,7 +220,13 @@ RgMapState deserializeRgMap(const std::string& text) {
         j.at("gateways"), s.gateways, [](const json& g) { return gateway(g); }, [](const Gateway& g) { return g.id; },
         "gateway");
     insertAll(
-        j.at("scans"), s.scans, [](const json& sc) { return scan(sc); },
+        j.at("scans"), s.scans,
+        [&](const json& sc) {
+          const DataId id = sc.at("id").get<DataId>();
+          const auto found = lasers.find(id);
+          if (found == lasers.end()) damaged("scan " + std::to_string(id) + " is not in the scan journal");
+          return StoredScan{std::move(found->second), poseFrom(sc.at("corrected"))};
+        },
         [](const StoredScan& sc) { return sc.scan.id; }, "scan");
     for (const json& e : j.at("events")) s.events.push_back(event(e));
     costs(j.at("costs"), s);

@@ -1,8 +1,9 @@
 // Tests the RG Mapping Kernel's checkpoints and its global consistency check: a kernel resumed
 // from a checkpoint taken anywhere in a tour ends with exactly the bytes of one that never
-// stopped (and the same descriptions); laser ranges of every kind survive the trip; damaged or
-// inconsistent checkpoints are format errors; deliberately broken states are reported by
-// checkConsistency, one message per violation.
+// stopped (and the same descriptions); laser ranges of every kind survive the trip; the scan
+// journal may hold more than the map (a crash between append and map) and a part of a line, but
+// not less; damaged or inconsistent checkpoints are format errors; deliberately broken states are
+// reported by checkConsistency, one message per violation.
 #include "core/rgmap/kernel/RgMapCodec.h"
 
 #include <cppunit/extensions/HelperMacros.h>
@@ -27,7 +28,18 @@ bool mentions(const std::vector<std::string>& violations, const std::string& wha
   return false;
 }
 
-void expectFormatError(const std::string& text) { CPPUNIT_ASSERT_THROW(deserializeRgMap(text), FormatError); }
+// The scan journal of `state`: every scan's line in ID order.
+std::string journalOf(const RgMapState& state) {
+  std::string lines;
+  for (const auto& [id, stored] : state.scans) lines += scanJournalLine(stored.scan);
+  return lines;
+}
+
+RgMapState roundTrip(const RgMapState& state) { return deserializeRgMap(serializeRgMap(state), journalOf(state)); }
+
+void expectFormatError(const std::string& text, const std::string& journal = "") {
+  CPPUNIT_ASSERT_THROW(deserializeRgMap(text, journal), FormatError);
+}
 
 // `text` with the first occurrence of `from` replaced by `to`.
 std::string replaced(std::string text, const std::string& from, const std::string& to) {
@@ -44,6 +56,7 @@ class RgMapCodecTest : public CppUnit::TestFixture {
   CPPUNIT_TEST(resumedRingClosesTheSameLoop);
   CPPUNIT_TEST(rangesOfEveryKindSurvive);
   CPPUNIT_TEST(doorAliasesSurvive);
+  CPPUNIT_TEST(journalMayHoldMoreButNotLess);
   CPPUNIT_TEST(damagedCheckpointsAreFormatErrors);
   CPPUNIT_TEST(brokenStatesAreReported);
   CPPUNIT_TEST_SUITE_END();
@@ -55,7 +68,7 @@ class RgMapCodecTest : public CppUnit::TestFixture {
     const std::string expected = serializeRgMap(straight.state());
     for (std::size_t stop : {std::size_t(1), inputs.size() / 3, inputs.size() / 2, inputs.size() - 1}) {
       const RgMappingKernel first = mapped(inputs, stop);
-      RgMappingKernel resumed({}, deserializeRgMap(serializeRgMap(first.state())));
+      RgMappingKernel resumed({}, roundTrip(first.state()));
       CPPUNIT_ASSERT_EQUAL(first.state().lastScanId, resumed.state().lastScanId);
       CPPUNIT_ASSERT_EQUAL(first.state().lastGatewayEventId, resumed.state().lastGatewayEventId);
       CPPUNIT_ASSERT_EQUAL(std::string(), feedChecked(resumed, inputs, stop, inputs.size()));
@@ -76,7 +89,7 @@ class RgMapCodecTest : public CppUnit::TestFixture {
     const RgMappingKernel straight = mapped(inputs, inputs.size());
     RgMappingKernel first = mapped(inputs, inputs.size() / 2);
     first.nameRegion(2, "east corridor");
-    RgMappingKernel resumed({}, deserializeRgMap(serializeRgMap(first.state())));
+    RgMappingKernel resumed({}, roundTrip(first.state()));
     CPPUNIT_ASSERT_EQUAL(std::string(), feedChecked(resumed, inputs, inputs.size() / 2, inputs.size()));
     CPPUNIT_ASSERT_EQUAL(RegionId(1), *resumed.regionByName("east corridor"));  // merged: the name stays
     CPPUNIT_ASSERT(resumed.state().gateways.at(1).neutralised);
@@ -108,38 +121,66 @@ class RgMapCodecTest : public CppUnit::TestFixture {
     s.nextRegionId = 2;
     s.lastScanId = 1;
     const std::string text = serializeRgMap(s);
-    const RgMapState back = deserializeRgMap(text);
+    const std::string line = scanJournalLine(scan);
+    const RgMapState back = deserializeRgMap(text, line);
     const std::vector<float>& r = back.scans.at(1).scan.ranges;
     CPPUNIT_ASSERT_EQUAL(scan.ranges.size(), r.size());
     for (std::size_t i = 0; i < r.size(); ++i)
       CPPUNIT_ASSERT(std::isnan(scan.ranges[i]) ? std::isnan(r[i]) : r[i] == scan.ranges[i]);
-    CPPUNIT_ASSERT(text.find("1.2345678,") != std::string::npos);  // the float's shortest form
+    CPPUNIT_ASSERT(line.find("1.2345678,") != std::string::npos);  // the float's shortest form
     CPPUNIT_ASSERT_EQUAL(text, serializeRgMap(back));
+    CPPUNIT_ASSERT_EQUAL(line, scanJournalLine(back.scans.at(1).scan));
   }
 
   void doorAliasesSurvive() {
     const std::vector<KernelInput> inputs = rgnav::testing::twoRoomTour().inputs();
     RgMapState s = mapped(inputs, inputs.size()).state();
     s.gateways.at(1).aliases = {111, 112};
-    const RgMapState back = deserializeRgMap(serializeRgMap(s));
+    const RgMapState back = roundTrip(s);
     CPPUNIT_ASSERT(back.gateways == s.gateways);
+  }
+
+  void journalMayHoldMoreButNotLess() {
+    const std::vector<KernelInput> inputs = rgnav::testing::twoRoomTour().inputs();
+    const RgMapState earlier = mapped(inputs, inputs.size() / 2).state();
+    const RgMapState later = mapped(inputs, inputs.size()).state();
+    const std::string map = serializeRgMap(earlier);
+    // A crash after appending the later scans, in the middle of the last line: the earlier map.
+    const std::string ahead = journalOf(later);
+    const RgMapState back = deserializeRgMap(map, ahead.substr(0, ahead.size() - 20));
+    CPPUNIT_ASSERT(back.scans == earlier.scans);
+    CPPUNIT_ASSERT_EQUAL(map, serializeRgMap(back));
+    // A scan appended twice (a map write failed after the append) is read once.
+    const std::string twice = journalOf(earlier) + scanJournalLine(earlier.scans.rbegin()->second.scan);
+    CPPUNIT_ASSERT(deserializeRgMap(map, twice).scans == earlier.scans);
+    // A journal without the map's last scan.
+    const std::string journal = journalOf(earlier);
+    const std::string shorter = journal.substr(0, journal.rfind('\n', journal.size() - 2) + 1);
+    try {
+      deserializeRgMap(map, shorter);
+      CPPUNIT_FAIL("a journal without a scan of the map was taken");
+    } catch (const FormatError& e) {
+      CPPUNIT_ASSERT(std::string(e.what()).find("is not in the scan journal") != std::string::npos);
+    }
   }
 
   void damagedCheckpointsAreFormatErrors() {
     const std::vector<KernelInput> inputs = rgnav::testing::twoRoomTour().inputs();
-    const std::string good = serializeRgMap(mapped(inputs, inputs.size()).state());
-    CPPUNIT_ASSERT_NO_THROW(deserializeRgMap(good));
-    expectFormatError(good.substr(0, good.size() / 2));
-    expectFormatError("");
-    expectFormatError("[1, 2, 3]");
-    expectFormatError(replaced(good, "\"version\":2", "\"version\":1"));
-    expectFormatError(replaced(good, "\"rgnav-rg-map\"", "\"rgnav-gateway-detection\""));
-    expectFormatError(replaced(good, "\"RegionCreated\"", "\"RegionBorn\""));
-    expectFormatError(replaced(good, "\"kind\":\"NarrowPassage\"", "\"kind\":\"Staircase\""));
-    expectFormatError(replaced(good, "\"neutralised\":false", "\"neutralised\":true"));  // inconsistent
-    expectFormatError(replaced(good, "\"gateways\":[1,2]", "\"gateways\":[1]"));         // one reference lost
+    const RgMapState state = mapped(inputs, inputs.size()).state();
+    const std::string good = serializeRgMap(state), journal = journalOf(state);
+    CPPUNIT_ASSERT_NO_THROW(deserializeRgMap(good, journal));
+    expectFormatError(good.substr(0, good.size() / 2), journal);
+    expectFormatError("", journal);
+    expectFormatError("[1, 2, 3]", journal);
+    expectFormatError(good, "{\"id\": 1}\n");  // a journal line without laser data
+    expectFormatError(replaced(good, "\"version\":3", "\"version\":2"), journal);
+    expectFormatError(replaced(good, "\"rgnav-rg-map\"", "\"rgnav-gateway-detection\""), journal);
+    expectFormatError(replaced(good, "\"RegionCreated\"", "\"RegionBorn\""), journal);
+    expectFormatError(replaced(good, "\"kind\":\"NarrowPassage\"", "\"kind\":\"Staircase\""), journal);
+    expectFormatError(replaced(good, "\"neutralised\":false", "\"neutralised\":true"), journal);  // inconsistent
+    expectFormatError(replaced(good, "\"gateways\":[1,2]", "\"gateways\":[1]"), journal);  // one reference lost
     try {
-      deserializeRgMap(replaced(good, "\"gateways\":[1,2]", "\"gateways\":[1]"));
+      deserializeRgMap(replaced(good, "\"gateways\":[1,2]", "\"gateways\":[1]"), journal);
     } catch (const FormatError& e) {
       CPPUNIT_ASSERT(std::string(e.what()).find("gateway 2") != std::string::npos);
     }
