@@ -11,8 +11,11 @@
 // prints every room, region and gateway (Listing.h). Trained HMMs (--models, if the file exists)
 // add hallway gateways to the narrow passages. The detector and kernel options default to the
 // modules' defaults (what the server set runs); --true-poses replaces SLAM by the true poses.
-// Where it differs from the issue: the issue maps with the full server set online; this program
-// runs the same chain in process (FinalMap.h is the seam where a server-set run plugs in).
+// --server-set maps each floor plan as the issue asks, online with the full server set
+// (ServerSetRun.h: Simulator, ScanMapper, GatewayDetection and RG Mapping Kernel modules with their
+// own omniNames and watchdog on free loopback ports), each module with its defaults; without it
+// the same chain runs in process (MappingRun.h), which is faster, takes the detector and kernel
+// options above and knows which scans each region holds (--list, --region-pictures).
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
@@ -28,6 +31,7 @@
 #include "tests/eval/rooms/RegionPixels.h"
 #include "tests/eval/rooms/RoomScoring.h"
 #include "tests/eval/rooms/ScoreBreakdown.h"
+#include "tests/eval/rooms/ServerSetRun.h"
 #include "tools/common/CommandLine.h"
 
 namespace po = boost::program_options;
@@ -42,8 +46,32 @@ struct Options {
   std::string outDir = "out/rooms";
   bool list = false;
   bool regionPictures = false;
+  bool serverSet = false;
   double growM = 0.3;
 };
+
+// Whether an option that only the in-process run takes differs from its default.
+bool inProcessOptionsGiven(const Options& o) {
+  const Options d;
+  const MappingPipelineConfig &p = o.setup.pipeline, &q = d.setup.pipeline;
+  return o.list || o.regionPictures || o.setup.truePoses || o.setup.maxTourSeconds != d.setup.maxTourSeconds ||
+         p.gateways.hallways.hypotheses.hallwayWidthM != q.gateways.hallways.hypotheses.hallwayWidthM ||
+         p.gateways.passages.maxDoorWidthM != q.gateways.passages.maxDoorWidthM ||
+         p.gateways.passages.minJambLengthM != q.gateways.passages.minJambLengthM ||
+         p.gateways.passageTracking.minSupport != q.gateways.passageTracking.minSupport ||
+         p.gateways.passageTracking.associationDistanceM != q.gateways.passageTracking.associationDistanceM ||
+         p.kernel.sides.rangeM != q.kernel.sides.rangeM ||
+         p.kernel.models.doorFrames.depthM != q.kernel.models.doorFrames.depthM ||
+         p.kernel.models.doorFrames.widenM != q.kernel.models.doorFrames.widenM;
+}
+
+MappingRun mapOne(const std::string& mapPath, const LoadedWorld& world, const Options& options,
+                  const std::optional<HmmClassifier>& classifier) {
+  if (!options.serverSet) return mapRoomTour(world.grid, *world.truth, options.setup, classifier);
+  const ServerSetSetup setup{classifier ? options.models : std::string(), options.simConfig,
+                             options.setup.simulation.seed};
+  return mapRoomTourOnServerSet(mapPath, world.grid, *world.truth, setup);
+}
 
 struct Totals {
   std::size_t maps = 0, scans = 0;
@@ -66,7 +94,7 @@ void evaluate(const std::string& mapPath, const Options& options, const std::opt
   const LoadedWorld world = loadWorld(mapPath);
   const IpaFiles files = ipaFilesOf(mapPath);
   if (!world.truth) throw FileError(mapPath + ": no ground-truth rooms beside it (" + files.truth + ")");
-  const MappingRun run = mapRoomTour(world.grid, *world.truth, options.setup, classifier);
+  const MappingRun run = mapOne(mapPath, world, options, classifier);
   const std::vector<SegmentPixels> regions = regionPixels(run.map, run.mapToWorld, world.grid, options.growM);
   const RoomScore score = scoreRooms(*world.truth, regions);
   const ScoreBreakdown losses = breakDownScore(*world.truth, world.grid, regions, score, run.unreachableRooms);
@@ -104,7 +132,10 @@ void evaluate(const std::string& mapPath, const Options& options, const std::opt
   totals.segmentPixels += score.segmentPixelSum();
 }
 
-void printHeader(bool hallways, bool truePoses, double growM) {
+void printHeader(bool hallways, bool truePoses, bool serverSet, double growM) {
+  std::printf("# %s\n", serverSet ? "SERVER SET: the Simulator, ScanMapper, GatewayDetection and RG Mapping Kernel "
+                                   "modules map online"
+                                 : "in process: the modules' algorithms chained in this program");
   std::printf("# room tour in the simulator -> ScanMapper (odometry-noised scans) -> GatewayDetector (%s)\n"
               "# -> RG Mapping Kernel, poses revised after SLAM optimisations and at the end; region freespace\n"
               "# on the floor plan's free pixels, grown %.2f m into free pixels no region claims (RegionGrowth.h),\n"
@@ -163,6 +194,8 @@ int main(int argc, char** argv) {
       ("sim-config", po::value(&options.simConfig), "simulator parameters (config/sim/*.yaml); default: built-in")
       ("seed", po::value(&options.setup.simulation.seed)->default_value(options.setup.simulation.seed),
        "simulation seed")
+      ("server-set", po::bool_switch(&options.serverSet),
+       "map online with the real server set (modules, omniNames, watchdog) instead of in process")
       ("true-poses", po::bool_switch(&options.setup.truePoses),
        "the kernel gets the true pose of every scan instead of SLAM's (what SLAM errors cost)")
       ("max-tour-s", po::value(&options.setup.maxTourSeconds)->default_value(options.setup.maxTourSeconds, shown(options.setup.maxTourSeconds)),
@@ -179,7 +212,10 @@ int main(int argc, char** argv) {
     std::optional<HmmClassifier> classifier;
     if (std::filesystem::exists(options.models)) classifier = loadHmmModels(options.models);
     std::filesystem::create_directories(options.outDir);
-    printHeader(classifier.has_value(), options.setup.truePoses, options.growM);
+    if (options.serverSet && inProcessOptionsGiven(options))
+      throw ConfigError("--server-set runs every module with its defaults: the detector and kernel options, "
+                        "--true-poses, --max-tour-s, --list and --region-pictures need the in-process run");
+    printHeader(classifier.has_value(), options.setup.truePoses, options.serverSet, options.growM);
     Totals totals;
     for (const std::string& map : maps) evaluate(map, options, classifier, totals);
     const auto n = double(std::max<std::size_t>(totals.maps, 1));
