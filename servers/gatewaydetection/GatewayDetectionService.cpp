@@ -29,6 +29,7 @@ GatewayDetectionService::GatewayDetectionService(const GatewayDetectorConfig& co
     : options_(std::move(options)), laser_(laserSettings, laserObject),
       health_(health),
       events_(options_.eventCapacity),
+      pacer_(options_.checkpointIntervalS),
       follower_(health, "laser", [this] { return followOnce(); }) {
   DetectionCheckpoint saved = loadCheckpoint(options_.checkpointFile);
   for (GatewayEvent& e : saved.events) events_.push(std::move(e));
@@ -55,6 +56,7 @@ bool GatewayDetectionService::followOnce() {
       std::lock_guard lock(mutex_);
       finished_ = true;
       events_.markEndOfData();
+      checkpoint();
     }
     return false;
   }
@@ -67,7 +69,7 @@ bool GatewayDetectionService::followOnce() {
     }
     health_.add("scans_processed");
   }
-  checkpoint();
+  if (pacer_.due()) checkpoint();
   return true;
 }
 
@@ -76,6 +78,7 @@ void GatewayDetectionService::checkpoint() {
   try {
     const std::vector<GatewayEvent> events(events_.records().begin(), events_.records().end());
     writeFileAtomically(options_.checkpointFile, serializeDetection({detector_->state(), events}));
+    pacer_.written();
     health_.clearError("checkpoint");
   } catch (const FileError& e) {
     health_.setError("checkpoint", e.what());

@@ -1,9 +1,10 @@
 // GatewayDetectionService: the GatewayDetection module's work behind its servant (thesis 5.2):
 // follows the Laser module's raw scans by ID ("the GDM continuously acquires raw laser
 // readings"), runs the GatewayDetector on every scan, keeps the buffer of gateway events for
-// consumers and checkpoints detector and buffer atomically after every batch. After a restart it
-// reloads the checkpoint and goes on after the last scan it holds, so events keep their IDs and
-// nothing is reported twice or lost.
+// consumers and checkpoints detector and buffer atomically at most once per checkpointIntervalS
+// while detecting and at the end (CheckpointPacer.h). After a restart it reloads the checkpoint and
+// goes on after the last scan it holds, so events keep their IDs and nothing is lost: the scans it
+// sees again give the same events under the same IDs.
 // Where we differ: gateways are tracked in the odometry frame of the scans, not with the
 // ScanMapper's corrected poses. A gateway is tracked over a few metres of driving, where odometry
 // is good; corrected poses change whenever the pose graph is optimised, and how far the
@@ -20,6 +21,7 @@
 #include "clientlibs/laser/LaserClient.h"
 #include "core/common/DataBuffer.h"
 #include "core/gateways/detection/GatewayDetector.h"
+#include "servers/common/CheckpointPacer.h"
 #include "servers/common/InputFollower.h"
 
 namespace rgnav {
@@ -28,6 +30,7 @@ struct GatewayDetectionServiceOptions {
   std::string checkpointFile;          // empty: no checkpoints
   std::size_t eventCapacity = 100000;  // events held for consumers
   std::uint32_t fetchBatch = 100;      // scans asked from the Laser module per call
+  double checkpointIntervalS = 1.0;    // at most one checkpoint per interval while detecting (CheckpointPacer.h)
 };
 
 class GatewayDetectionService {
@@ -59,6 +62,7 @@ class GatewayDetectionService {
   std::mutex mutex_;
   std::unique_ptr<GatewayDetector> detector_;
   DataBuffer<GatewayEvent> events_;
+  CheckpointPacer pacer_;
   bool finished_ = false;
   InputFollower follower_;  // last: it stops before the rest goes
 };

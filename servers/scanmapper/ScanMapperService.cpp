@@ -29,6 +29,7 @@ ScanMapperService::ScanMapperService(const SlamConfig& config, const ClientSetti
       laser_(laserSettings, laserObject),
       health_(health),
       mapper_(config, loadCheckpoint(options_.checkpointFile)),
+      pacer_(options_.checkpointIntervalS),
       scans_(options_.bufferCapacity),
       follower_(health, "laser", [this] { return step(); }) {
   health_.set("resumed_after_scan", mapper_.lastInputId());
@@ -101,7 +102,7 @@ bool ScanMapperService::followOnce() {
     health_.add("loop_constraints", outcome.loopsAdded);
   }
   std::lock_guard lock(mutex_);
-  checkpoint();
+  if (pacer_.due()) checkpoint();
   return true;
 }
 
@@ -109,6 +110,7 @@ void ScanMapperService::checkpoint() {
   if (options_.checkpointFile.empty()) return;
   try {
     writeFileAtomically(options_.checkpointFile, serializeState(mapper_.state()));
+    pacer_.written();
     health_.clearError("checkpoint");
   } catch (const FileError& e) {
     health_.setError("checkpoint", e.what());
