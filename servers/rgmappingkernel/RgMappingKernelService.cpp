@@ -24,13 +24,6 @@ RgMapState loadCheckpoint(const std::string& file) {
   }
 }
 
-// The scan journal with exactly the scans of `state`: what a crash appended ahead of the map goes.
-void rewriteJournal(const std::string& checkpointFile, const RgMapState& state) {
-  std::string lines;
-  for (const auto& [id, stored] : state.scans) lines += scanJournalLine(stored.scan);
-  writeFileAtomically(journalOf(checkpointFile), lines);
-}
-
 }  // namespace
 
 RgMappingKernelService::RgMappingKernelService(const RgMappingKernelConfig& config, const ClientSettings& settings,
@@ -44,7 +37,9 @@ RgMappingKernelService::RgMappingKernelService(const RgMappingKernelConfig& conf
       follower_(health, "inputs", [this] { return followOnce(); }) {
   checkpointedScan_ = kernel_->state().lastScanId;
   checkpointedEvent_ = kernel_->state().events.empty() ? 0 : kernel_->state().events.back().id;
-  if (!options_.checkpointFile.empty()) rewriteJournal(options_.checkpointFile, kernel_->state());
+  // The journal with exactly the checkpoint's scans: what a crash appended ahead of the map goes.
+  if (!options_.checkpointFile.empty())
+    writeFileAtomically(journalOf(options_.checkpointFile), scanJournalLines(kernel_->state()));
   health_.set("resumed_after_scan", checkpointedScan_);
   health_.set("resumed_after_gateway_event", kernel_->state().lastGatewayEventId);
 }
@@ -158,12 +153,9 @@ bool RgMappingKernelService::followOnce() {
 void RgMappingKernelService::checkpoint() {
   if (options_.checkpointFile.empty()) return;
   try {
-    const RgMapState& state = kernel_->state();
-    std::string newScans;
-    for (auto s = state.scans.upper_bound(checkpointedScan_); s != state.scans.end(); ++s)
-      newScans += scanJournalLine(s->second.scan);
+    const std::string newScans = scanJournalLines(kernel_->state(), checkpointedScan_);
     if (!newScans.empty()) appendToFileDurably(journalOf(options_.checkpointFile), newScans);
-    writeFileAtomically(options_.checkpointFile, serializeRgMap(state));
+    writeFileAtomically(options_.checkpointFile, serializeRgMap(kernel_->state()));
     checkpointedScan_ = kernel_->state().lastScanId;
     checkpointedEvent_ = kernel_->state().events.empty() ? 0 : kernel_->state().events.back().id;
     health_.clearError("checkpoint");

@@ -197,7 +197,11 @@ std::string serializeRgMap(const RgMapState& s) {
   return j.dump();
 }
 
-std::string scanJournalLine(const LaserScan& scan) { return laser(scan).dump() + "\n"; }
+std::string scanJournalLines(const RgMapState& state, DataId afterId) {
+  std::string lines;
+  for (auto s = state.scans.upper_bound(afterId); s != state.scans.end(); ++s) lines += laser(s->second.scan).dump() + "\n";
+  return lines;
+}
 
 RgMapState deserializeRgMap(const std::string& text, const std::string& journal) {
   RgMapState s;

@@ -22,8 +22,10 @@ namespace rgnav {
 
 // The map: the state without the scans' laser data.
 std::string serializeRgMap(const RgMapState& state);
-// The scan journal's line for a scan (ends in a newline).
-std::string scanJournalLine(const LaserScan& scan);
+// The scan journal's lines of the scans of `state` with IDs above `afterId`, in ID order (each
+// line ends in a newline): afterId 0 gives the whole journal, the last checkpoint's lastScanId what
+// to append to it.
+std::string scanJournalLines(const RgMapState& state, DataId afterId = 0);
 
 // The state from a map and a scan journal. Journal lines of scans the map does not hold (appended
 // before a crash, ahead of the map) and a part of a line at its end are ignored. Throws FormatError

@@ -9,6 +9,7 @@
 #include <cppunit/extensions/HelperMacros.h>
 
 #include <cmath>
+#include <iterator>
 #include <limits>
 
 #include "core/common/Errors.h"
@@ -28,14 +29,9 @@ bool mentions(const std::vector<std::string>& violations, const std::string& wha
   return false;
 }
 
-// The scan journal of `state`: every scan's line in ID order.
-std::string journalOf(const RgMapState& state) {
-  std::string lines;
-  for (const auto& [id, stored] : state.scans) lines += scanJournalLine(stored.scan);
-  return lines;
+RgMapState roundTrip(const RgMapState& state) {
+  return deserializeRgMap(serializeRgMap(state), scanJournalLines(state));
 }
-
-RgMapState roundTrip(const RgMapState& state) { return deserializeRgMap(serializeRgMap(state), journalOf(state)); }
 
 void expectFormatError(const std::string& text, const std::string& journal = "") {
   CPPUNIT_ASSERT_THROW(deserializeRgMap(text, journal), FormatError);
@@ -121,7 +117,7 @@ class RgMapCodecTest : public CppUnit::TestFixture {
     s.nextRegionId = 2;
     s.lastScanId = 1;
     const std::string text = serializeRgMap(s);
-    const std::string line = scanJournalLine(scan);
+    const std::string line = scanJournalLines(s);
     const RgMapState back = deserializeRgMap(text, line);
     const std::vector<float>& r = back.scans.at(1).scan.ranges;
     CPPUNIT_ASSERT_EQUAL(scan.ranges.size(), r.size());
@@ -129,7 +125,7 @@ class RgMapCodecTest : public CppUnit::TestFixture {
       CPPUNIT_ASSERT(std::isnan(scan.ranges[i]) ? std::isnan(r[i]) : r[i] == scan.ranges[i]);
     CPPUNIT_ASSERT(line.find("1.2345678,") != std::string::npos);  // the float's shortest form
     CPPUNIT_ASSERT_EQUAL(text, serializeRgMap(back));
-    CPPUNIT_ASSERT_EQUAL(line, scanJournalLine(back.scans.at(1).scan));
+    CPPUNIT_ASSERT_EQUAL(line, scanJournalLines(back));
   }
 
   void doorAliasesSurvive() {
@@ -146,15 +142,15 @@ class RgMapCodecTest : public CppUnit::TestFixture {
     const RgMapState later = mapped(inputs, inputs.size()).state();
     const std::string map = serializeRgMap(earlier);
     // A crash after appending the later scans, in the middle of the last line: the earlier map.
-    const std::string ahead = journalOf(later);
+    const std::string ahead = scanJournalLines(later);
     const RgMapState back = deserializeRgMap(map, ahead.substr(0, ahead.size() - 20));
     CPPUNIT_ASSERT(back.scans == earlier.scans);
     CPPUNIT_ASSERT_EQUAL(map, serializeRgMap(back));
     // A scan appended twice (a map write failed after the append) is read once.
-    const std::string twice = journalOf(earlier) + scanJournalLine(earlier.scans.rbegin()->second.scan);
+    const std::string twice = scanJournalLines(earlier) + scanJournalLines(earlier, std::prev(earlier.scans.end(), 2)->first);
     CPPUNIT_ASSERT(deserializeRgMap(map, twice).scans == earlier.scans);
     // A journal without the map's last scan.
-    const std::string journal = journalOf(earlier);
+    const std::string journal = scanJournalLines(earlier);
     const std::string shorter = journal.substr(0, journal.rfind('\n', journal.size() - 2) + 1);
     try {
       deserializeRgMap(map, shorter);
@@ -167,7 +163,7 @@ class RgMapCodecTest : public CppUnit::TestFixture {
   void damagedCheckpointsAreFormatErrors() {
     const std::vector<KernelInput> inputs = rgnav::testing::twoRoomTour().inputs();
     const RgMapState state = mapped(inputs, inputs.size()).state();
-    const std::string good = serializeRgMap(state), journal = journalOf(state);
+    const std::string good = serializeRgMap(state), journal = scanJournalLines(state);
     CPPUNIT_ASSERT_NO_THROW(deserializeRgMap(good, journal));
     expectFormatError(good.substr(0, good.size() / 2), journal);
     expectFormatError("", journal);
