@@ -6,20 +6,18 @@
 #include <cmath>
 
 namespace rgnav {
-namespace {
 
-PoseErrors poseErrors(const MappingPipeline& pipeline, const Pose2D& mapToWorld, const std::vector<Pose2D>& truePoses) {
-  PoseErrors errors;
+WorldPlacement placeInWorld(const std::vector<Pose2D>& corrected, const std::vector<Pose2D>& truePoses) {
+  WorldPlacement out;
+  out.mapToWorld = compose(truePoses.front(), inverse(corrected.front()));
   for (std::size_t i = 0; i < truePoses.size(); ++i) {
-    const Pose2D placed = compose(mapToWorld, pipeline.correctedPose(DataId(i + 1)));
+    const Pose2D placed = compose(out.mapToWorld, corrected[i]);
     const double error = std::hypot(placed.x - truePoses[i].x, placed.y - truePoses[i].y);
-    errors.meanM += error / double(truePoses.size());
-    errors.maxM = std::max(errors.maxM, error);
+    out.errors.meanM += error / double(truePoses.size());
+    out.errors.maxM = std::max(out.errors.maxM, error);
   }
-  return errors;
+  return out;
 }
-
-}  // namespace
 
 MappingRun mapRoomTour(const OccupancyGrid& grid, const GroundTruth& truth, const MappingRunSetup& setup,
                        const std::optional<HmmClassifier>& classifier) {
@@ -50,8 +48,11 @@ MappingRun mapRoomTour(const OccupancyGrid& grid, const GroundTruth& truth, cons
   busy += Clock::now() - started;
   out.mappingSeconds = std::chrono::duration<double>(busy).count();
   if (!truePoses.empty()) {
-    out.mapToWorld = compose(truePoses.front(), inverse(pipeline.correctedPose(1)));
-    out.poseErrors = poseErrors(pipeline, out.mapToWorld, truePoses);
+    std::vector<Pose2D> corrected;
+    for (std::size_t i = 0; i < truePoses.size(); ++i) corrected.push_back(pipeline.correctedPose(DataId(i + 1)));
+    const WorldPlacement placement = placeInWorld(corrected, truePoses);
+    out.mapToWorld = placement.mapToWorld;
+    out.poseErrors = placement.errors;
   }
   for (const auto& [id, region] : pipeline.kernel().state().regions) out.regionScans[id] = region.scans;
   out.tour = tour.run;

@@ -38,6 +38,15 @@ struct PoseErrors {
   double maxM = 0.0;
 };
 
+// The map frame in the world frame, fixed by the first scan (its true pose times its corrected
+// pose's inverse), and the pose errors of all scans so placed; corrected[i] and truePoses[i] are
+// scan i + 1's, and both are non-empty and of one length.
+struct WorldPlacement {
+  Pose2D mapToWorld;
+  PoseErrors errors;
+};
+WorldPlacement placeInWorld(const std::vector<Pose2D>& corrected, const std::vector<Pose2D>& truePoses);
+
 struct MappingRun {
   FinalMap map;
   Pose2D mapToWorld;  // the map frame's pose in the world frame

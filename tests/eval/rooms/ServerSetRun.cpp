@@ -3,7 +3,6 @@
 
 #include <algorithm>
 #include <chrono>
-#include <cmath>
 #include <filesystem>
 #include <stdexcept>
 #include <thread>
@@ -94,13 +93,9 @@ MappingRun mapRoomTourOnServerSet(const std::string& floorPlanPath, const Occupa
     out.truePath.emplace_back(truePoses[id - 1].x, truePoses[id - 1].y);
   }
   if (last > 0) {
-    out.mapToWorld = compose(truePoses.front(), inverse(corrected.front()));
-    for (DataId id = 1; id <= last; ++id) {
-      const Pose2D placed = compose(out.mapToWorld, corrected[id - 1]);
-      const double error = std::hypot(placed.x - truePoses[id - 1].x, placed.y - truePoses[id - 1].y);
-      out.poseErrors.meanM += error / double(last);
-      out.poseErrors.maxM = std::max(out.poseErrors.maxM, error);
-    }
+    const WorldPlacement placement = placeInWorld(corrected, truePoses);
+    out.mapToWorld = placement.mapToWorld;
+    out.poseErrors = placement.errors;
   }
   const Tour plan = planTour(grid, truth, openestPose(grid));  // as the Simulator module plans it
   out.tour = tourOf(plan, truth, out.truePath);
