@@ -219,13 +219,9 @@ void RgMappingKernel::traverse(const GatewayEvent& event, const Pose2D& odomToMa
     return;
   repairMissedCrossing(id, *from, t.scanId);
   ++state_.gateways.at(id).traversalsFrom[*from];
-  if (state_.gateways.at(id).door() && !separatesSpace(state_, id, config_.separation)) {
-    const RegionId here = joinSide(id, *from, state_.current, t.scanId);
-    joinSide(id, *to, here, t.scanId);
-    emitEvent(state_, K::GatewayTraversed, state_.current, state_.current, id, t.scanId);
-    return;
-  }
-  const RegionId left = joinSide(id, *from, state_.current, t.scanId);
+  const bool separates = !state_.gateways.at(id).door() || separatesSpace(state_, id, config_.separation);
+  RegionId left = joinSide(id, *from, state_.current, t.scanId);
+  if (!separates) left = joinSide(id, *to, left, t.scanId);  // no door: both sides are one region
   RegionId entered = state_.gateways.at(id).sides[*to].region;
   if (entered == left) {  // a neutralised gateway: the robot stays where it is
     emitEvent(state_, K::GatewayTraversed, left, left, id, t.scanId);
