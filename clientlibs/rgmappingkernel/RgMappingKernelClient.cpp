@@ -70,6 +70,17 @@ RegionId RgMappingKernelClient::regionByName(const std::string& name) {
   return connection_.call("regionByName", [&](Kernel k) { return k->regionByName(name.c_str()); });
 }
 
+void RgMappingKernelClient::nameObject(RegionId region, const Eigen::Vector2d& atInRegion, const std::string& name) {
+  connection_.call("nameObject", [&](Kernel k) {
+    k->nameObject(region, toIdl(atInRegion), name.c_str());
+    return 0;
+  });
+}
+
+RgMappingKernel::NamedObject RgMappingKernelClient::objectByName(const std::string& name) {
+  return connection_.call("objectByName", [&](Kernel k) { return fromIdl(k->objectByName(name.c_str())); });
+}
+
 RegionId RgMappingKernelClient::mergeRegions(RegionId a, RegionId b) {
   return connection_.call("mergeRegions", [&](Kernel k) { return k->mergeRegions(a, b); });
 }

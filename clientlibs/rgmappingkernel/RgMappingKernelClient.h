@@ -24,6 +24,8 @@ class RgMappingKernelClient : public ModuleClientOf<RGNav::RGMappingKernel> {
   PathView findPath(RegionId startRegion, const Eigen::Vector2d& start, RegionId goalRegion, const Eigen::Vector2d& goal);
   void nameRegion(RegionId id, const std::string& name);
   RegionId regionByName(const std::string& name);
+  void nameObject(RegionId region, const Eigen::Vector2d& atInRegion, const std::string& name);
+  RgMappingKernel::NamedObject objectByName(const std::string& name);
   RegionId mergeRegions(RegionId a, RegionId b);
   RgMapEventBatch eventsSince(RgMapEventId afterId, std::uint32_t maxCount);
   // The files written, one per line.

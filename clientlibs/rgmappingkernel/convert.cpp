@@ -52,6 +52,9 @@ RGNav::RegionInfo toIdl(const RegionView& r) {
   out.accuracyInlierShare = r.accuracyInlierShare;
   out.accuracyRms = r.accuracyRmsM;
   out.completeness = r.completeness;
+  out.objects = toIdlSeq<RGNav::RectangleObjectSeq>(r.objects, [](const RectangleObjectView& o) {
+    return RGNav::RectangleObject{toIdl(o.pose), o.lengthM, o.widthM, o.confidence, o.name.c_str()};
+  });
   return out;
 }
 
@@ -76,8 +79,15 @@ RegionView fromIdl(const RGNav::RegionInfo& r) {
   out.accuracyInlierShare = r.accuracyInlierShare;
   out.accuracyRmsM = r.accuracyRms;
   out.completeness = r.completeness;
+  out.objects = fromIdlSeq<std::vector<RectangleObjectView>>(r.objects, [](const RGNav::RectangleObject& o) {
+    return RectangleObjectView{fromIdl(o.pose), o.length, o.width, o.confidence, o.name.in()};
+  });
   return out;
 }
+
+RGNav::NamedObject toIdl(const RgMappingKernel::NamedObject& o) { return {o.region, toIdl(o.namedAt)}; }
+
+RgMappingKernel::NamedObject fromIdl(const RGNav::NamedObject& o) { return {o.region, fromIdl(o.namedAt)}; }
 
 RGNav::RgGateway toIdl(const GatewayView& g) {
   RGNav::RgGateway out;

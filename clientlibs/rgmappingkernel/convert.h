@@ -10,6 +10,8 @@ RGNav::RegionSummary toIdl(const RegionSummaryView& summary);
 RegionSummaryView fromIdl(const RGNav::RegionSummary& summary);
 RGNav::RegionInfo toIdl(const RegionView& region);
 RegionView fromIdl(const RGNav::RegionInfo& region);
+RGNav::NamedObject toIdl(const RgMappingKernel::NamedObject& object);
+RgMappingKernel::NamedObject fromIdl(const RGNav::NamedObject& object);
 RGNav::RgGateway toIdl(const GatewayView& gateway);
 GatewayView fromIdl(const RGNav::RgGateway& gateway);
 RGNav::RgGraphInfo toIdl(const GraphView& graph);

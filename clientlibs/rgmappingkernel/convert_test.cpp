@@ -35,6 +35,7 @@ class RgMappingKernelConvertTest : public CppUnit::TestFixture {
     r.accuracyInlierShare = 0.97;
     r.accuracyRmsM = 0.012;
     r.completeness = 0.9;
+    r.objects = {{{2.0, 1.5, 0.3}, 1.2, 0.6, 0.75, "cabinet"}, {{0.5, 0.4, 1.5}, 0.8, 0.8, 0.5, ""}};
     const RegionView back = fromIdl(toIdl(r));
     CPPUNIT_ASSERT(back.summary == r.summary);
     CPPUNIT_ASSERT(back.lines == r.lines);
@@ -54,6 +55,7 @@ class RgMappingKernelConvertTest : public CppUnit::TestFixture {
     CPPUNIT_ASSERT_EQUAL(r.accuracyInlierShare, back.accuracyInlierShare);
     CPPUNIT_ASSERT_EQUAL(r.accuracyRmsM, back.accuracyRmsM);
     CPPUNIT_ASSERT_EQUAL(r.completeness, back.completeness);
+    CPPUNIT_ASSERT(back.objects == r.objects);
   }
 
   void gatewayGraphPathRoundTrip() {

@@ -58,4 +58,15 @@ double intersectionArea(const Polygon& a, const Polygon& b) {
   return clipped.size() < 3 ? 0.0 : polygonArea(clipped);
 }
 
+bool insideConvex(const Polygon& polygon, const Eigen::Vector2d& p, double marginM) {
+  if (polygon.size() < 3) return false;
+  for (std::size_t i = 0; i < polygon.size(); ++i) {
+    const Eigen::Vector2d& a = polygon[i];
+    const Eigen::Vector2d edge = polygon[(i + 1) % polygon.size()] - a;
+    const double cross = edge.x() * (p.y() - a.y()) - edge.y() * (p.x() - a.x());
+    if (cross < -marginM * edge.norm()) return false;  // farther than marginM right of the edge
+  }
+  return true;
+}
+
 }  // namespace rgnav

@@ -1,5 +1,5 @@
 // Convex polygons for comparing object hypotheses: convex hull (Andrew's monotone chain), area,
-// intersection by Sutherland-Hodgman clipping.
+// intersection by Sutherland-Hodgman clipping, point inside.
 #pragma once
 
 #include <Eigen/Core>
@@ -18,5 +18,9 @@ double polygonArea(const Polygon& polygon);
 
 // Area of the intersection of two convex counter-clockwise polygons.
 double intersectionArea(const Polygon& a, const Polygon& b);
+
+// True if `p` lies inside the convex counter-clockwise `polygon` grown by `marginM`; false for
+// fewer than 3 vertices.
+bool insideConvex(const Polygon& polygon, const Eigen::Vector2d& p, double marginM);
 
 }  // namespace rgnav

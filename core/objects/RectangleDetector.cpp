@@ -81,13 +81,14 @@ RectangleDetector::RectangleDetector(const RectangleDetectorParams& params)
     throw InvalidArgumentError("rectangle detector: minConfidence must lie in [0, 1], maxOverlapRatio in [0, 1)");
 }
 
-std::vector<Rectangle2D> RectangleDetector::detect(const std::vector<LineSegment>& lines) const {
+std::vector<Rectangle2D> RectangleDetector::detect(const std::vector<LineSegment>& lines,
+                                                   const std::function<bool(const Rectangle2D&)>& keep) const {
   std::vector<Rectangle2D> candidates;
   std::vector<Polygon> outlines;
   std::vector<double> confidences;
   for (const Quadrangle& q : grouping_.twoStage(lines)) {
     Rectangle2D r = fitRectangle(lines, q);
-    if (r.confidence < params_.minConfidence) continue;
+    if (r.confidence < params_.minConfidence || (keep && !keep(r))) continue;
     outlines.push_back(rectangleOutline(r));
     confidences.push_back(r.confidence);
     candidates.push_back(r);

@@ -16,6 +16,7 @@
 // marks regions of interest (QuadrangleGrouping::group) but would drop a table inside its room.
 #pragma once
 
+#include <functional>
 #include <vector>
 
 #include "core/common/Pose2D.h"
@@ -48,8 +49,10 @@ class RectangleDetector {
   // Throws InvalidArgumentError for invalid parameters.
   explicit RectangleDetector(const RectangleDetectorParams& params = {});
 
-  // Rectangles found in `lines`, most confident first.
-  std::vector<Rectangle2D> detect(const std::vector<LineSegment>& lines) const;
+  // Rectangles found in `lines`, most confident first; with `keep`, only those it accepts (tested
+  // before overlaps are suppressed, so that a rejected rectangle suppresses none).
+  std::vector<Rectangle2D> detect(const std::vector<LineSegment>& lines,
+                                  const std::function<bool(const Rectangle2D&)>& keep = {}) const;
 
  private:
   RectangleDetectorParams params_;

@@ -54,6 +54,17 @@ RGNav::RegionId RgMappingKernelImpl::regionByName(const char* name) {
   return withIdlErrors([&] { return service_.regionByName(name); });
 }
 
+void RgMappingKernelImpl::nameObject(RGNav::RegionId region, const RGNav::Point2D& atInRegion, const char* name) {
+  withIdlErrors([&] {
+    service_.nameObject(region, fromIdl(atInRegion), name);
+    return 0;
+  });
+}
+
+RGNav::NamedObject RgMappingKernelImpl::objectByName(const char* name) {
+  return toIdl(withIdlErrors([&] { return service_.objectByName(name); }));
+}
+
 RGNav::RegionId RgMappingKernelImpl::mergeRegions(RGNav::RegionId a, RGNav::RegionId b) {
   return withIdlErrors([&] { return service_.mergeRegions(a, b); });
 }

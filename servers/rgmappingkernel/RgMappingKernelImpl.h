@@ -21,6 +21,8 @@ class RgMappingKernelImpl : public ServiceServant<POA_RGNav::RGMappingKernel> {
                           const RGNav::Point2D& goal) override;
   void nameRegion(RGNav::RegionId id, const char* name) override;
   RGNav::RegionId regionByName(const char* name) override;
+  void nameObject(RGNav::RegionId region, const RGNav::Point2D& atInRegion, const char* name) override;
+  RGNav::NamedObject objectByName(const char* name) override;
   RGNav::RegionId mergeRegions(RGNav::RegionId a, RGNav::RegionId b) override;
   RGNav::RgMapEventBatch* eventsSince(RGNav::RgMapEventId afterId, CORBA::ULong maxCount, const char* consumer) override;
   char* exportMap(const char* directory, const char* name, CORBA::Boolean occupancy) override;

@@ -217,6 +217,19 @@ RegionId RgMappingKernelService::regionByName(const std::string& name) {
   return *id;
 }
 
+void RgMappingKernelService::nameObject(RegionId region, const Eigen::Vector2d& atInRegion, const std::string& name) {
+  std::lock_guard lock(mutex_);
+  kernel_->nameObject(region, atInRegion, name);
+  checkpoint();
+}
+
+RgMappingKernel::NamedObject RgMappingKernelService::objectByName(const std::string& name) {
+  std::lock_guard lock(mutex_);
+  const std::optional<RgMappingKernel::NamedObject> found = kernel_->objectByName(name);
+  if (!found) throw NotAvailableError("no object is named '" + name + "'");
+  return *found;
+}
+
 RegionId RgMappingKernelService::mergeRegions(RegionId a, RegionId b) {
   std::lock_guard lock(mutex_);
   const RegionId merged = kernel_->mergeRegions(a, b);

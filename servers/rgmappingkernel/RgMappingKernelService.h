@@ -48,6 +48,9 @@ class RgMappingKernelService {
   PathView findPath(const RgPlace& start, const RgPlace& goal);
   void nameRegion(RegionId id, const std::string& name);
   RegionId regionByName(const std::string& name);
+  void nameObject(RegionId region, const Eigen::Vector2d& atInRegion, const std::string& name);
+  // Throws NotAvailableError if no object has the name.
+  RgMappingKernel::NamedObject objectByName(const std::string& name);
   RegionId mergeRegions(RegionId a, RegionId b);
   RgMapEventBatch eventsSince(RgMapEventId afterId, std::size_t maxCount);
   // Runs `write` on the kernel under the lock (exports).

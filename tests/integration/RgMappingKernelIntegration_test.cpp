@@ -109,6 +109,18 @@ class RgMappingKernelIntegrationTest : public CppUnit::TestFixture {
     CPPUNIT_ASSERT_THROW(kernel.regionByName("nowhere"), NotAvailableError);
     CPPUNIT_ASSERT_THROW(kernel.mergeRegions(joined.sideA, joined.sideA), InvalidArgumentError);
 
+    // A 2D object named through the client library (and still named after the restart below).
+    RegionView furnished;
+    for (const RegionSummaryView& r : kernel.regions())
+      if (furnished.objects.empty()) furnished = kernel.region(r.id);
+    CPPUNIT_ASSERT(!furnished.objects.empty());
+    const Pose2D object = furnished.objects.front().pose;
+    kernel.nameObject(furnished.summary.id, {object.x, object.y}, "first object");
+    CPPUNIT_ASSERT_EQUAL(std::string("first object"), kernel.region(furnished.summary.id).objects.front().name);
+    CPPUNIT_ASSERT_EQUAL(furnished.summary.id, kernel.objectByName("first object").region);
+    CPPUNIT_ASSERT_THROW(kernel.objectByName("nothing"), NotAvailableError);
+    CPPUNIT_ASSERT_THROW(kernel.nameObject(100000, {0.0, 0.0}, "nothing"), InvalidArgumentError);
+
     const std::string files = kernel.exportMap(cluster.dir() + "/out", "intel", true);
     for (const char* suffix : {"intel.rgmap.json", "intel.rgmap.svg", "intel.rgmap.png", "intel.pgm", "intel.yaml"})
       CPPUNIT_ASSERT_MESSAGE(suffix, std::filesystem::exists(cluster.dir() + "/out/" + suffix));
@@ -125,6 +137,7 @@ class RgMappingKernelIntegrationTest : public CppUnit::TestFixture {
     CPPUNIT_ASSERT_EQUAL(summary.gateways, resumed.gateways);
     CPPUNIT_ASSERT(kernel.gateways() == gateways);
     CPPUNIT_ASSERT_EQUAL(joined.sideA, kernel.regionByName("start room"));
+    CPPUNIT_ASSERT_EQUAL(furnished.summary.id, kernel.objectByName("first object").region);
   }
 
   void testFreiburgMapsAreConsistent() {

@@ -5,6 +5,7 @@
 //       "<label>: scans=… regions=… gateways=… neutralized=… scans_per_s=…"
 //   rgnav-rgmap regions | gateways | events
 //   rgnav-rgmap name <region> <name> | merge <a> <b> | path <region> <x> <y> <region> <x> <y>
+//   rgnav-rgmap name-object <region> <x> <y> <name> (x, y in the region frame) | object <name>
 //   rgnav-rgmap export <dir> <name> [--occupancy]
 #include <chrono>
 #include <cstdio>
@@ -84,7 +85,7 @@ int main(int argc, char** argv) {
   std::string command, naming, robot, label, out, name;
   std::vector<std::string> args;
   bool occupancy = false, quiet = false;
-  po::options_description desc("rgnav-rgmap <build|regions|gateways|events|name|merge|path|export> [args] [options]");
+  po::options_description desc("rgnav-rgmap <build|regions|gateways|events|name|name-object|object|merge|path|export> [args] [options]");
   desc.add_options()
       ("help", "this text")
       ("command", po::value(&command)->required(), "what to do")
@@ -118,6 +119,14 @@ int main(int argc, char** argv) {
     } else if (command == "name") {
       want(2);
       kernel.nameRegion(std::stoull(args[0]), args[1]);
+    } else if (command == "name-object") {
+      want(4);
+      kernel.nameObject(std::stoull(args[0]), {std::stod(args[1]), std::stod(args[2])}, args[3]);
+    } else if (command == "object") {
+      want(1);
+      const RgMappingKernel::NamedObject found = kernel.objectByName(args[0]);
+      std::printf("object %s region=%llu at=%.2f,%.2f\n", args[0].c_str(), static_cast<unsigned long long>(found.region),
+                  found.namedAt.x(), found.namedAt.y());
     } else if (command == "merge") {
       want(2);
       std::printf("merged into region %llu\n",

@@ -17,6 +17,7 @@ RegionDescription describeRegion(const RegionEvidence& evidence, std::span<const
   d.mainDirections = mainDirections(lines, params.directions);
   d.accuracy = lineMapAccuracy(evidence.sample().points(), lines, params.accuracy);
   d.completeness = freespaceCompleteness(evidence.freespace(), gateways);
+  d.objects = detectRegionObjects(std::vector<LineSegment>(lines.begin(), lines.end()), d.freespace, params.objects);
   d.scanCount = evidence.freespace().scanCount();
   return d;
 }

@@ -8,8 +8,10 @@
 //   - freespace: FreespaceBitmap.h (the 1-bit map and its byte size), FreespaceMoments.h;
 //   - main directions of the line map: MainDirections.h;
 //   - accuracy: LineMapAccuracy.h, on the evidence's measurement sample;
-//   - completeness: FreespaceCompleteness.h.
-// Cost: linear in the grid cells plus sample points x map lines (about a millisecond for a room).
+//   - completeness: FreespaceCompleteness.h;
+//   - the 2D objects O (thesis 2.1: a region is <M, O, P, G_ref>): RegionObjects.h.
+// Cost: linear in the grid cells plus sample points x map lines plus the quadrangle grouping of
+// the line map (about a millisecond for a room).
 #pragma once
 
 #include <Eigen/Core>
@@ -26,12 +28,14 @@
 #include "core/rgmap/describe/LineMapAccuracy.h"
 #include "core/rgmap/describe/MainDirections.h"
 #include "core/rgmap/describe/RegionEvidence.h"
+#include "core/rgmap/describe/RegionObjects.h"
 
 namespace rgnav {
 
 struct DescriptionParams {
   AccuracyParams accuracy;
   MainDirectionParams directions;
+  RegionObjectParams objects;
 };
 
 struct RegionDescription {
@@ -46,6 +50,7 @@ struct RegionDescription {
   std::vector<MainDirection> mainDirections;  // of the line map
   LineMapAccuracy accuracy;
   FreespaceCompleteness completeness;
+  std::vector<Rectangle2D> objects;  // region frame, most confident first
   std::size_t scanCount = 0;
 
   std::size_t freespaceBytes() const { return freespace.bytes.size(); }

@@ -25,6 +25,7 @@ inline constexpr Rgb kNeutralisedColour{150, 150, 150};  // gateways with one re
 inline constexpr Rgb kCrossingColour{0, 0, 0};        // crossing points
 inline constexpr Rgb kGraphColour{220, 0, 0};         // RG Graph edges
 inline constexpr Rgb kLabelColour{0, 0, 0};
+inline constexpr Rgb kObjectColour{120, 60, 160};     // 2D objects
 
 // The freespace colour of region `id`.
 Rgb regionColour(RegionId id);

@@ -7,6 +7,7 @@
 #include "core/rgmap/export/Base64.h"
 #include "core/rgmap/export/ExportNumbers.h"
 #include "core/rgmap/export/MapStorage.h"
+#include "core/rgmap/kernel/ObjectNames.h"
 
 namespace rgnav {
 namespace {
@@ -48,6 +49,18 @@ Json region(const RegionSnapshot& r) {
   Json directions = Json::array();
   for (const MainDirection& m : d.mainDirections)
     directions.push_back({{"angle", angle(m.angleRad)}, {"length", length(m.lengthM)}, {"share", ratio(m.share)}});
+  Json objects = Json::array();
+  const std::vector<std::string> names = objectNamesOf(r.region, d.objects);
+  for (std::size_t i = 0; i < d.objects.size(); ++i) {
+    const Rectangle2D& o = d.objects[i];
+    objects.push_back({{"kind", "rectangle"},
+                       {"center", point({o.pose.x, o.pose.y})},
+                       {"angle", angle(o.pose.theta)},
+                       {"length", length(o.lengthM)},
+                       {"width", length(o.widthM)},
+                       {"confidence", ratio(o.confidence)},
+                       {"name", names[i]}});
+  }
   const Json box = d.boundingBox.isEmpty()
                        ? Json(nullptr)
                        : Json{{"min", point(d.boundingBox.min())}, {"max", point(d.boundingBox.max())}};
@@ -81,7 +94,8 @@ Json region(const RegionSnapshot& r) {
           {"completeness", {{"value", ratio(d.completeness.completeness)},
                             {"frontierShare", ratio(d.completeness.frontierShare)},
                             {"borderCells", d.completeness.borderCells},
-                            {"openCells", d.completeness.openCells}}}};
+                            {"openCells", d.completeness.openCells}}},
+          {"objects", objects}};
 }
 
 Json gateway(const GatewaySnapshot& s) {

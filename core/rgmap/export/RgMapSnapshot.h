@@ -1,11 +1,9 @@
 // RgMapSnapshot: an RG Map as plain data at one moment, for its exports (JSON, SVG, PNG): the
-// regions with their metric description M and properties P (thesis 2.1.1: line map and region
-// description, both in the region's own frame), the gateways placed into the map frame (2.1.2)
-// and the RG Graph (2.1.3). The kernel computes line maps and descriptions on demand; a snapshot
-// asks for every one once, so the exporters need no kernel, work on the same data, and tests can
-// build snapshots by hand.
-// Deliberate difference: the thesis' regions also hold objects (O); the kernel does not keep them
-// yet (RgMapState.h), so neither does a snapshot.
+// regions with their metric description M, objects O and properties P (thesis 2.1.1: line map
+// and region description with its 2D objects, all in the region's own frame), the gateways placed
+// into the map frame (2.1.2) and the RG Graph (2.1.3). The kernel computes line maps and
+// descriptions on demand; a snapshot asks for every one once, so the exporters need no kernel,
+// work on the same data, and tests can build snapshots by hand.
 #pragma once
 
 #include <Eigen/Core>

@@ -76,6 +76,12 @@ std::string region(const RegionSnapshot& r) {
   for (const LineSegment& s : r.lines) append(d, {"M", xy(s.start), "L", xy(s.end)});
   out += "<path class=\"lines\" fill=\"none\"" + attr("stroke", hexColour(kLineColour)) +
          attr("stroke-width", num(kLineWidthM)) + " stroke-linecap=\"round\"" + attr("d", d) + "/>\n";
+  for (const Rectangle2D& o : r.description.objects) {
+    std::string corners;
+    for (const Eigen::Vector2d& p : rectangleOutline(o)) append(corners, {corners.empty() ? "" : " ", xy(p)});
+    out += "<polygon class=\"object\" fill=\"none\"" + attr("stroke", hexColour(kObjectColour)) +
+           attr("stroke-width", num(kLineWidthM)) + attr("points", corners) + "/>\n";
+  }
   return out + "</g>\n";
 }
 

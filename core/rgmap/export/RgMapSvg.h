@@ -3,7 +3,7 @@
 // shows an RG Map this way). Drawn, bottom to top:
 //   - each region in a group placed at its frame (rotate + translate): its freespace bitmap as one
 //     filled path in the region's colour (MapColours.h; one rectangle per run of free cells in a
-//     row), its line map as one dark path;
+//     row), its line map as one dark path, its 2D objects as purple outlines;
 //   - the RG Graph's edges as thin red lines between its crossing points;
 //   - each gateway as one group: a door (narrow passage) as an orange segment between its gateway
 //     points, a hallway area as its outlined square (blue), a neutralised gateway grey and dashed;
@@ -13,7 +13,7 @@
 // the map frame's y is negated as coordinates are written, so the text stays upright. Values are
 // written with 1 mm (0.01 degree) resolution; the same snapshot gives the same bytes.
 // Elements carry classes for scripts and style sheets: region (id "region-<id>"), freespace,
-// lines, graph, gateway (id "gateway-<id>"), crossing, region-label, gateway-label, scale-bar.
+// lines, object, graph, gateway (id "gateway-<id>"), crossing, region-label, gateway-label, scale-bar.
 #pragma once
 
 #include <string>

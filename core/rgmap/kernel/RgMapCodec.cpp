@@ -73,16 +73,24 @@ Gateway gateway(const json& j) {
 }
 
 json region(const Region& r) {
+  json names = json::object();
+  for (const auto& [name, at] : r.objectNames) names[name] = {jsonNumber(at.x()), jsonNumber(at.y())};
   return {{"id", r.id},     {"frame", jsonPose(r.frame)},  {"scans", r.scans}, {"gateways", r.gateways},
-          {"name", r.name}, {"finalised", r.finalised}};
+          {"name", r.name}, {"finalised", r.finalised}, {"objectNames", names}};
 }
+// "objectNames" came with object naming; a checkpoint written before has none.
 Region region(const json& j) {
-  return {j.at("id").get<RegionId>(),
-          poseFrom(j.at("frame")),
-          j.at("scans").get<std::vector<DataId>>(),
-          j.at("gateways").get<std::set<GatewayId>>(),
-          j.at("name").get<std::string>(),
-          j.at("finalised").get<bool>()};
+  Region r{j.at("id").get<RegionId>(),
+           poseFrom(j.at("frame")),
+           j.at("scans").get<std::vector<DataId>>(),
+           j.at("gateways").get<std::set<GatewayId>>(),
+           j.at("name").get<std::string>(),
+           j.at("finalised").get<bool>(),
+           {}};
+  if (j.contains("objectNames"))
+    for (const auto& [name, at] : j.at("objectNames").items())
+      r.objectNames[name] = {at.at(0).get<double>(), at.at(1).get<double>()};
+  return r;
 }
 
 json laser(const LaserScan& l) {

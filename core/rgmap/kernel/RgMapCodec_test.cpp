@@ -112,7 +112,7 @@ class RgMapCodecTest : public CppUnit::TestFixture {
                    std::numeric_limits<float>::denorm_min(),
                    0.0f};
     s.scans.emplace(1, StoredScan{scan, {1, 2, 3}});
-    s.regions.emplace(1, Region{1, {}, {1}, {}, {}, false});
+    s.regions.emplace(1, Region{1, {}, {1}, {}, {}, false, {}});
     s.current = 1;
     s.nextRegionId = 2;
     s.lastScanId = 1;

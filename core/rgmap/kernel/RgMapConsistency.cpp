@@ -70,13 +70,16 @@ std::vector<std::string> checkConsistency(const RgMapState& s) {
   }
 
   std::map<DataId, std::size_t> regionsOfScan;
-  std::map<std::string, RegionId> names;
+  std::map<std::string, RegionId> names, objectNames;
   for (const auto& [id, r] : s.regions) {
     if (r.id != id || id == 0 || id >= s.nextRegionId) out.push_back(regionName(id) + ": bad ID");
     checkRegion(s, r, out);
     for (DataId scan : r.scans) ++regionsOfScan[scan];
     if (!r.name.empty() && !names.emplace(r.name, id).second)
       out.push_back(regionName(id) + ": name \"" + r.name + "\" is taken by " + regionName(names.at(r.name)));
+    for (const auto& [name, at] : r.objectNames)
+      if (name.empty() || !objectNames.emplace(name, id).second)
+        out.push_back(regionName(id) + ": object name \"" + name + "\" is empty or taken");
   }
   for (const auto& [id, stored] : s.scans) {
     const std::size_t n = regionsOfScan.contains(id) ? regionsOfScan.at(id) : 0;

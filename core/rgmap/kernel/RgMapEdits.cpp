@@ -30,7 +30,7 @@ void emitEvent(RgMapState& s, RgMapEventKind kind, RegionId region, RegionId oth
 
 RegionId createRegion(RgMapState& s, const Pose2D& frame, DataId scan) {
   const RegionId id = s.nextRegionId++;
-  s.regions.emplace(id, Region{id, frame, {}, {}, {}, false});
+  s.regions.emplace(id, Region{id, frame, {}, {}, {}, false, {}});
   emitEvent(s, K::RegionCreated, id, 0, 0, scan);
   return id;
 }
@@ -69,6 +69,7 @@ RegionId mergeRegions(RgMapState& s, RegionId a, RegionId b, DataId scan) {
   std::merge(keep.scans.begin(), keep.scans.end(), gone.scans.begin(), gone.scans.end(), std::back_inserter(scans));
   keep.scans = std::move(scans);
   if (keep.name.empty()) keep.name = gone.name;
+  keep.objectNames.merge(gone.objectNames);
   keep.finalised = keep.finalised || gone.finalised;
   for (GatewayId id : gone.gateways) {
     Gateway& g = s.gateways.at(id);

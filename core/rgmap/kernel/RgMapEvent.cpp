@@ -9,7 +9,7 @@ namespace {
 
 using K = RgMapEventKind;
 
-constexpr std::array<std::pair<K, std::string_view>, 16> kNames = {{
+constexpr std::array<std::pair<K, std::string_view>, 17> kNames = {{
     {K::RegionCreated, "RegionCreated"},
     {K::RegionEntered, "RegionEntered"},
     {K::RegionFinalised, "RegionFinalised"},
@@ -17,6 +17,7 @@ constexpr std::array<std::pair<K, std::string_view>, 16> kNames = {{
     {K::RegionsMerged, "RegionsMerged"},
     {K::RegionRemoved, "RegionRemoved"},
     {K::RegionNamed, "RegionNamed"},
+    {K::ObjectNamed, "ObjectNamed"},
     {K::GatewayAdded, "GatewayAdded"},
     {K::GatewayUpdated, "GatewayUpdated"},
     {K::GatewayAttached, "GatewayAttached"},

@@ -24,6 +24,7 @@ enum class RgMapEventKind : std::uint8_t {
   RegionsMerged,       // region: the merged region (the lower ID), other: the region merged into it
   RegionRemoved,       // region: a region left without a single scan in it
   RegionNamed,         // region
+  ObjectNamed,         // region: the region of the named object
   GatewayAdded,        // gateway: a new gateway hypothesis
   GatewayUpdated,      // gateway: new geometry or class probabilities from the detector
   GatewayAttached,     // gateway, region: now on one of its sides; other: the region it replaced

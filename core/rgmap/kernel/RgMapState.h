@@ -11,9 +11,11 @@
 // composition happens when region-frame geometry is derived.
 // Deliberate differences: the thesis stores coordinate transformations between regions in the
 // gateways; with one SLAM map frame, the transform between two regions is between(frameA,
-// frameB). Objects (O) are not kept yet.
+// frameB). Objects (O) are derived from the line map like the description (RegionModels.h); the
+// state keeps only their names (ObjectNames.h).
 #pragma once
 
+#include <Eigen/Core>
 #include <array>
 #include <cstddef>
 #include <cstdint>
@@ -78,6 +80,8 @@ struct Region {
   std::set<GatewayId> gateways;  // G_ref: every gateway with this region on a side
   std::string name;              // semantic name; empty: none
   bool finalised = false;        // left at least once, so it has a final description
+  // Names of its objects: name -> the named object's centre in the map frame (ObjectNames.h).
+  std::map<std::string, Eigen::Vector2d> objectNames;
 
   friend bool operator==(const Region&, const Region&) = default;
 };

@@ -2,6 +2,7 @@
 #include "core/rgmap/kernel/RgMapViews.h"
 
 #include "core/common/Errors.h"
+#include "core/rgmap/kernel/ObjectNames.h"
 
 namespace rgnav {
 
@@ -30,6 +31,11 @@ RegionView regionView(const RgMappingKernel& kernel, RegionId id) {
   v.accuracyInlierShare = d.accuracy.inlierShare;
   v.accuracyRmsM = d.accuracy.rmsDistanceM;
   v.completeness = d.completeness.completeness;
+  const std::vector<std::string> names = objectNamesOf(found->second, d.objects);
+  for (std::size_t i = 0; i < d.objects.size(); ++i) {
+    const Rectangle2D& o = d.objects[i];
+    v.objects.push_back({o.pose, o.lengthM, o.widthM, o.confidence, names[i]});
+  }
   return v;
 }
 

@@ -32,6 +32,16 @@ struct Segment2 {
   friend bool operator==(const Segment2&, const Segment2&) = default;
 };
 
+// A rectangular 2D object of a region (RegionObjects.h), in the region frame.
+struct RectangleObjectView {
+  Pose2D pose;  // centre; theta: direction of the length axis, in [0, pi)
+  double lengthM = 0.0, widthM = 0.0;
+  double confidence = 0.0;  // share of the perimeter seen
+  std::string name;         // semantic name; empty: none
+
+  friend bool operator==(const RectangleObjectView&, const RectangleObjectView&) = default;
+};
+
 // Everything in the region frame.
 struct RegionView {
   RegionSummaryView summary;
@@ -43,6 +53,7 @@ struct RegionView {
   double majorAxisAngleRad = 0.0, majorVariance = 0.0, minorVariance = 0.0;
   std::vector<MainDirection> mainDirections;
   double accuracyInlierShare = 0.0, accuracyRmsM = 0.0, completeness = 0.0;
+  std::vector<RectangleObjectView> objects;  // most confident first
 };
 
 // In the map frame.

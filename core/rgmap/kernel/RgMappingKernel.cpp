@@ -12,6 +12,7 @@
 #include "core/lines/ScanPoints.h"
 #include "core/rgmap/kernel/DoorSeparation.h"
 #include "core/rgmap/kernel/KernelInputs.h"
+#include "core/rgmap/kernel/ObjectNames.h"
 #include "core/rgmap/kernel/RgMapConsistency.h"
 #include "core/rgmap/kernel/RgMapEdits.h"
 #include "core/rgmap/kernel/RgMapGraph.h"
@@ -329,6 +330,37 @@ void RgMappingKernel::nameRegion(RegionId region, const std::string& name) {
 std::optional<RegionId> RgMappingKernel::regionByName(const std::string& name) const {
   for (const auto& [id, r] : state_.regions)
     if (!name.empty() && r.name == name) return id;
+  return std::nullopt;
+}
+
+void RgMappingKernel::nameObject(RegionId region, const Eigen::Vector2d& atInRegion, const std::string& name) {
+  const auto r = state_.regions.find(region);
+  if (r == state_.regions.end()) throw InvalidArgumentError("no region " + std::to_string(region));
+  const std::vector<Rectangle2D>& objects = description(region).objects;
+  const std::optional<std::size_t> index = objectAt(objects, atInRegion);
+  if (!index)
+    throw InvalidArgumentError("region " + std::to_string(region) + " has no object at (" +
+                               std::to_string(atInRegion.x()) + ", " + std::to_string(atInRegion.y()) + ")");
+  const auto isThisObject = [&](const Eigen::Vector2d& namedAt) {
+    const Pose2D inRegion = between(r->second.frame, {namedAt.x(), namedAt.y(), 0.0});
+    return objectAt(objects, {inRegion.x, inRegion.y}) == index;
+  };
+  const std::optional<NamedObject> holder = objectByName(name);
+  if (!name.empty() && holder && !(holder->region == region && isThisObject(holder->namedAt)))
+    throw InvalidArgumentError("another object is already named \"" + name + "\"");
+  std::erase_if(r->second.objectNames, [&](const auto& entry) { return isThisObject(entry.second); });
+  if (!name.empty()) {
+    const Pose2D centre = compose(r->second.frame, {objects[*index].pose.x, objects[*index].pose.y, 0.0});
+    r->second.objectNames[name] = {centre.x, centre.y};
+  }
+  emitEvent(state_, K::ObjectNamed, region, 0, 0, state_.lastScanId);
+}
+
+std::optional<RgMappingKernel::NamedObject> RgMappingKernel::objectByName(const std::string& name) const {
+  for (const auto& [id, r] : state_.regions) {
+    const auto found = r.objectNames.find(name);
+    if (found != r.objectNames.end()) return NamedObject{id, found->second};
+  }
   return std::nullopt;
 }
 

@@ -39,7 +39,7 @@
 //     there. Deliberate difference: the thesis leaves such errors to later loop closings
 //     ("temporary inconsistency"); we repair what the current visit shows and leave earlier visits
 //     to loop closing. Not for hallway areas (GatewayGeometry.h).
-//   - Requests: merge two regions (e.g. "these are the same room", 6.1.1), name regions (semantics),
+//   - Requests: merge two regions (e.g. "these are the same room", 6.1.1), name regions and objects (semantics),
 //     revise corrected poses (SLAM loop closures: descriptions follow, RegionModels.h), learn RG
 //     Graph costs (5.4).
 // Every change is an RgMapEvent; the whole state is RgMapState (serialise it with RgMapCodec.h).
@@ -123,6 +123,17 @@ class RgMappingKernel {
   // region or a name another region has.
   void nameRegion(RegionId region, const std::string& name);
   std::optional<RegionId> regionByName(const std::string& name) const;
+  // Names the object of region `region` at `atInRegion` (region frame; ObjectNames.h says which
+  // object that is), replacing a name it had; an empty name removes its name. Throws
+  // InvalidArgumentError for an unknown region, no object there, or a name another object has.
+  void nameObject(RegionId region, const Eigen::Vector2d& atInRegion, const std::string& name);
+  // The region holding the object named `name` and the object's centre in the map frame when it
+  // was named.
+  struct NamedObject {
+    RegionId region = 0;
+    Eigen::Vector2d namedAt = Eigen::Vector2d::Zero();
+  };
+  std::optional<NamedObject> objectByName(const std::string& name) const;
 
   // Cost adaptation of the RG Graph (EdgeCostTable.h). Throw InvalidArgumentError for an edge or
   // door that is not in the graph, or bad measurements.

@@ -15,7 +15,9 @@
 #include "core/common/Errors.h"
 #include "core/lines/ScanPoints.h"
 #include "core/rgmap/graph/RgPathSearch.h"
+#include "core/rgmap/kernel/RgMapCodec.h"
 #include "core/rgmap/kernel/RgMapEdits.h"
+#include "core/rgmap/kernel/RgMapViews.h"
 #include "core/rgmap/kernel/testing/SyntheticTour.h"
 
 using namespace rgnav;
@@ -83,6 +85,7 @@ class RgMappingKernelTest : public CppUnit::TestFixture {
   CPPUNIT_TEST(preliminaryDescriptionGrowsWithTheScans);
   CPPUNIT_TEST(hallwayTurnJoinsTwoRegions);
   CPPUNIT_TEST(regionsAreNamedAndFoundByName);
+  CPPUNIT_TEST(objectsAreNamedAndFoundByName);
   CPPUNIT_TEST(regionsAreMergedOnRequest);
   CPPUNIT_TEST(pathLeadsThroughBothDoors);
   CPPUNIT_TEST(learnedCostsAreKept);
@@ -309,6 +312,43 @@ class RgMappingKernelTest : public CppUnit::TestFixture {
     CPPUNIT_ASSERT(!k.regionByName("lab"));
     CPPUNIT_ASSERT_EQUAL(RgMapEventKind::RegionNamed, k.state().events.back().kind);
     CPPUNIT_ASSERT(k.checkConsistency().empty());
+  }
+
+  void objectsAreNamedAndFoundByName() {
+    // A 0.7 x 1.2 m cabinet against room 1's east wall.
+    rgnav::testing::TourWorld world = rgnav::testing::hallwayWithTwoRooms();
+    for (const rgnav::testing::Wall& w : rgnav::testing::boxWalls({5.65, 3.2}, 0.0, 0.7, 1.2)) world.walls.push_back(w);
+    const std::vector<rgnav::testing::KernelInput> inputs = twoRoomTour(world).inputs();
+    RgMappingKernel k = rgnav::testing::mapped(inputs, inputs.size());
+    const RegionView room = regionView(k, kRoom1);
+    CPPUNIT_ASSERT_EQUAL(std::size_t(1), room.objects.size());
+    const Pose2D cabinet = between(room.summary.frame, {5.65, 3.2, 0.0});  // the true centre, region frame
+    CPPUNIT_ASSERT_DOUBLES_EQUAL(cabinet.x, room.objects[0].pose.x, 0.1);
+    CPPUNIT_ASSERT_DOUBLES_EQUAL(cabinet.y, room.objects[0].pose.y, 0.1);
+    CPPUNIT_ASSERT(regionView(k, kHallway).objects.empty());
+
+    k.nameObject(kRoom1, {cabinet.x + 0.2, cabinet.y}, "files");
+    CPPUNIT_ASSERT_EQUAL(RgMapEventKind::ObjectNamed, k.state().events.back().kind);
+    CPPUNIT_ASSERT_EQUAL(std::string("files"), regionView(k, kRoom1).objects[0].name);
+    const auto found = k.objectByName("files");
+    CPPUNIT_ASSERT(found && found->region == kRoom1);
+    CPPUNIT_ASSERT((found->namedAt - Eigen::Vector2d(5.65, 3.2)).norm() < 0.1);  // map frame = true frame here
+    CPPUNIT_ASSERT(!k.objectByName("desk"));
+    CPPUNIT_ASSERT_THROW(k.nameObject(kRoom1, {cabinet.x + 2.0, cabinet.y}, "desk"), InvalidArgumentError);
+    CPPUNIT_ASSERT_THROW(k.nameObject(99, {0.0, 0.0}, "desk"), InvalidArgumentError);
+    k.nameObject(kRoom1, {cabinet.x, cabinet.y}, "cabinet");  // renames it
+    CPPUNIT_ASSERT(!k.objectByName("files"));
+    CPPUNIT_ASSERT_EQUAL(std::string("cabinet"), regionView(k, kRoom1).objects[0].name);
+    CPPUNIT_ASSERT(k.checkConsistency().empty());
+
+    // The name survives a merge of its region and a checkpoint round trip.
+    k.mergeRegions(kHallway, kRoom1);
+    CPPUNIT_ASSERT_EQUAL(kHallway, k.objectByName("cabinet")->region);
+    const RgMappingKernel resumed({}, deserializeRgMap(serializeRgMap(k.state()), scanJournalLines(k.state())));
+    CPPUNIT_ASSERT(resumed.objectByName("cabinet"));
+    const Pose2D inMerged = between(k.state().regions.at(kHallway).frame, {5.65, 3.2, 0.0});
+    k.nameObject(kHallway, {inMerged.x, inMerged.y}, "");
+    CPPUNIT_ASSERT(!k.objectByName("cabinet"));
   }
 
   void regionsAreMergedOnRequest() {

@@ -15,17 +15,6 @@ std::string kindName(DetectionKind kind) {
   return "?";
 }
 
-bool insideConvex(const Polygon& polygon, const Eigen::Vector2d& p, double marginM) {
-  if (polygon.size() < 3) return false;
-  for (std::size_t i = 0; i < polygon.size(); ++i) {
-    const Eigen::Vector2d& a = polygon[i];
-    const Eigen::Vector2d edge = polygon[(i + 1) % polygon.size()] - a;
-    const double cross = edge.x() * (p.y() - a.y()) - edge.y() * (p.x() - a.x());
-    if (cross < -marginM * edge.norm()) return false;  // farther than marginM right of the edge
-  }
-  return true;
-}
-
 std::vector<std::size_t> rasterize(const Polygon& outline, const std::vector<Eigen::Vector2d>& anchors,
                                    const OccupancyGrid& grid) {
   std::vector<std::size_t> cells;

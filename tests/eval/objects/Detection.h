@@ -28,7 +28,4 @@ struct Detection {
 std::vector<std::size_t> rasterize(const Polygon& outline, const std::vector<Eigen::Vector2d>& anchors,
                                    const OccupancyGrid& grid);
 
-// True if `p` lies inside the convex counter-clockwise `polygon` grown by `marginM`.
-bool insideConvex(const Polygon& polygon, const Eigen::Vector2d& p, double marginM);
-
 }  // namespace rgnav

@@ -5,7 +5,7 @@
 //      fed with the key scans taken in that room (the sensor moved 0.25 m or turned 15 degrees
 //      since the last one: merging re-sorts the whole map per scan); RectangleDetector on each
 //      map (3.2: alpha 80-100 degrees, DN_max = DO_min = 200 mm, but one open corner allowed,
-//      see openCornerRectangles).
+//      see openCornerRectangles, RegionObjects.h).
 //   2. Rectangles whose inside the laser saw through (BeamEvidence: rooms, corridors) are
 //      dropped, as are those more than ten times as long as wide (walls: the most elongated
 //      furniture of the ten maps is about 1:8); duplicates from neighbouring rooms are
@@ -28,23 +28,12 @@
 
 #include "core/objects/CircleDetector.h"
 #include "core/objects/RectangleDetector.h"
+#include "core/rgmap/describe/RegionObjects.h"
 #include "core/sim/OccupancyGrid.h"
 #include "tests/eval/objects/Detection.h"
 #include "tests/eval/objects/TourScans.h"
 
 namespace rgnav {
-
-// The thesis rectangle parameters (3.2) with one open corner allowed (grouping case A): furniture
-// stands against walls, and the wall behind a cabinet is cut into two lines by the cabinet, so
-// the fourth corner never closes. A cabinet seen on two sides covers half its perimeter, which is
-// the library's default minimum confidence: the fit scatters such views over 0.46-0.52; 0.45
-// takes them.
-inline RectangleDetectorParams openCornerRectangles() {
-  RectangleDetectorParams params;
-  params.grouping.restrictive = false;
-  params.minConfidence = 0.45;
-  return params;
-}
 
 // The circle detector's defaults with a smaller clustering gap: the scan points of a whole tour
 // lie dense on every surface, and chairs stand closer than 10 cm around round tables.

@@ -4,6 +4,7 @@
 #include "core/lines/ScanPoints.h"
 #include "core/rgmap/export/MapCanvas.h"
 #include "core/sim/world/PngIo.h"
+#include "tests/eval/rooms/ObjectScoring.h"
 
 namespace rgnav {
 namespace {
@@ -50,6 +51,11 @@ MapCanvas drawRegions(const OccupancyGrid& world, const GroundTruth& truth, cons
       if (g.gatewayPoints.size() > 2 || i == 0) canvas.line(a, b, colour, 3);
     }
   }
+  for (const RegionView& region : map.regions)
+    for (const RectangleObjectView& o : region.objects) {
+      const Polygon outline = objectOutlineInWorld(region, o, mapToWorld);
+      for (std::size_t i = 0; i < outline.size(); ++i) canvas.line(outline[i], outline[(i + 1) % outline.size()], kObjectColour, 2);
+    }
   for (const SegmentPixels& region : regions) {
     if (region.pixels.empty()) continue;
     Eigen::Vector2d sum = Eigen::Vector2d::Zero();

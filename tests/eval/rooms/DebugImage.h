@@ -2,7 +2,8 @@
 // walls and furniture dark grey; region pixels (RegionPixels.h) in their RG Map colours
 // (MapColours.h), darkened where two or more of the drawn regions claim a pixel; ground-truth room
 // pixels none of the drawn regions covers red; ground-truth separator lines black; the RG Map's
-// gateways in their export colours (doors orange, hallway areas blue, neutralised grey); each
+// gateways in their export colours (doors orange, hallway areas blue, neutralised grey), its 2D
+// objects as purple outlines; each
 // drawn region's ID at the centre of its pixels.
 //   - writeRoomImage: every region;
 //   - writeRegionImage: one region, with the true robot positions of its scans as black dots

@@ -8,7 +8,8 @@
 //   rooms: maps=… recall_mean=… precision_mean=… recall_pooled=… precision_pooled=…
 // where the means are over the maps' means and the pooled figures sum pixels over all maps. A
 // picture per map goes to --out (DebugImage.h; --region-pictures: one per region too); --list
-// prints every room, region and gateway (Listing.h). Trained HMMs (--models, if the file exists)
+// prints every room, region and gateway (Listing.h). A line per map and one before the last score
+// the regions' 2D objects against the furniture (ObjectScoring.h). Trained HMMs (--models, if the file exists)
 // add hallway gateways to the narrow passages. The detector and kernel options default to the
 // modules' defaults (what the server set runs); --true-poses replaces SLAM by the true poses.
 // --server-set maps each floor plan as the issue asks, online with the full server set
@@ -25,9 +26,11 @@
 #include "core/gateways/classify/HmmModelFile.h"
 #include "core/sim/LoadedWorld.h"
 #include "core/sim/SimulationConfigYaml.h"
+#include "core/sim/world/FloorPlan.h"
 #include "tests/eval/rooms/DebugImage.h"
 #include "tests/eval/rooms/Listing.h"
 #include "tests/eval/rooms/MappingRun.h"
+#include "tests/eval/rooms/ObjectScoring.h"
 #include "tests/eval/rooms/RegionPixels.h"
 #include "tests/eval/rooms/RoomScoring.h"
 #include "tests/eval/rooms/ScoreBreakdown.h"
@@ -77,7 +80,12 @@ struct Totals {
   std::size_t maps = 0, scans = 0;
   double recallMeans = 0.0, precisionMeans = 0.0, ceilingMeans = 0.0, mappingSeconds = 0.0;
   std::size_t roomOverlap = 0, roomPixels = 0, segmentOverlap = 0, segmentPixels = 0;
+  ObjectScore objects;
 };
+
+// Furniture blobs smaller than this (20 cells, 0.05 m2: table and chair legs) are specks for the
+// object score: no rectangle describes them.
+constexpr int kMinFurnitureCells = 20;
 
 double ratio(std::size_t a, std::size_t b) { return b == 0 ? 0.0 : double(a) / double(b); }
 
@@ -119,6 +127,11 @@ void evaluate(const std::string& mapPath, const Options& options, const std::opt
   std::printf("#   losses: recall ceiling %.3f covered %.3f best %.3f | precision pixels off-room %.3f leaked %.3f "
               "merged %.3f\n", losses.ceilingMean, losses.coveredMean, score.recallMean(), losses.offRoomShare,
               losses.leakedShare, losses.mergedShare);
+  const ObjectScore objects = scoreObjects(
+      run.map, run.mapToWorld, world.grid, furnitureTruth(world.grid, loadFloorPlan(files.empty), kMinFurnitureCells));
+  std::printf("#   objects: %zu, on furniture %zu (%.3f) | furniture blobs >= %d cells found %zu of %zu\n",
+              objects.objects, objects.onFurniture, ratio(objects.onFurniture, objects.objects), kMinFurnitureCells,
+              objects.blobsFound, objects.blobs);
   if (options.list) printListing(score, *world.truth, run);
   std::fflush(stdout);
   ++totals.maps;
@@ -131,6 +144,10 @@ void evaluate(const std::string& mapPath, const Options& options, const std::opt
   totals.roomPixels += score.roomPixelSum();
   totals.segmentOverlap += score.segmentOverlapSum();
   totals.segmentPixels += score.segmentPixelSum();
+  totals.objects.objects += objects.objects;
+  totals.objects.onFurniture += objects.onFurniture;
+  totals.objects.blobs += objects.blobs;
+  totals.objects.blobsFound += objects.blobsFound;
 }
 
 void printHeader(bool hallways, bool truePoses, bool serverSet, double growM) {
@@ -225,6 +242,10 @@ int main(int argc, char** argv) {
     std::printf("# recall ceiling mean=%.3f: the share of each room's pixels that are free in the furnished map and\n"
                 "# reachable by the tour; no region can hold more (furniture, unreachable rooms)\n",
                 totals.ceilingMeans / n);
+    std::printf("# objects=%zu on_furniture=%.3f furniture_found=%.3f (RG Map rectangles vs furniture blobs >= %d "
+                "cells, ObjectScoring.h)\n", totals.objects.objects,
+                ratio(totals.objects.onFurniture, totals.objects.objects),
+                ratio(totals.objects.blobsFound, totals.objects.blobs), kMinFurnitureCells);
     std::printf("rooms: maps=%zu recall_mean=%.3f precision_mean=%.3f recall_pooled=%.3f precision_pooled=%.3f\n",
                 totals.maps, totals.recallMeans / n, totals.precisionMeans / n,
                 ratio(totals.roomOverlap, totals.roomPixels), ratio(totals.segmentOverlap, totals.segmentPixels));

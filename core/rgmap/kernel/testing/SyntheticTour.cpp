@@ -69,8 +69,8 @@ RgMappingKernel mapped(const std::vector<KernelInput>& inputs, std::size_t end) 
   return kernel;
 }
 
-SyntheticTour twoRoomTour() {
-  SyntheticTour tour(hallwayWithTwoRooms(), kTourDrift);
+SyntheticTour twoRoomTour(TourWorld world) {
+  SyntheticTour tour(std::move(world), kTourDrift);
   tour.driveThrough({{1, 0.9},
                      {4, 0.9},
                      {4, 3.5},

@@ -104,9 +104,10 @@ class SyntheticTour {
 // The odometry drift of the tours: odometry = kTourDrift ∘ corrected.
 inline constexpr Pose2D kTourDrift{0.4, -0.3, 0.15};
 
-// hallwayWithTwoRooms(): along the hallway (y = 0.9) into room 1 and back, into room 2 and back,
-// into room 1 again (a revisit) and back to the hallway's west end.
-SyntheticTour twoRoomTour();
+// `world` (hallwayWithTwoRooms(), perhaps with furniture added): along the hallway (y = 0.9) into
+// room 1 and back, into room 2 and back, into room 1 again (a revisit) and back to the hallway's
+// west end.
+SyntheticTour twoRoomTour(TourWorld world = hallwayWithTwoRooms());
 // ringCorridor(): from (1.1, 1) east through the door, once around the block, and through the
 // door again to (6.6, 1).
 SyntheticTour ringTour();
