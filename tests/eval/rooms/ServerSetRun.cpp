@@ -12,6 +12,7 @@
 #include "clientlibs/scanmapper/ScanMapperClient.h"
 #include "core/sim/StartPose.h"
 #include "core/sim/motion/TourPlanner.h"
+#include "tests/support/cluster/Interruption.h"
 #include "tests/support/cluster/TestCluster.h"
 
 namespace rgnav {
@@ -19,6 +20,7 @@ namespace {
 
 using testing::ClusterModule;
 using testing::TestCluster;
+using testing::throwIfInterrupted;
 
 std::string absolute(const std::string& path) { return std::filesystem::absolute(path).string(); }
 
@@ -38,6 +40,7 @@ std::vector<ClusterModule> mappingSet(const std::string& floorPlanPath, const Se
 FinalMap finishedMap(RgMappingKernelClient& kernel, double limitSeconds) {
   const auto giveUp = std::chrono::steady_clock::now() + std::chrono::duration<double>(limitSeconds);
   while (!kernel.summary().endOfData) {
+    throwIfInterrupted();
     if (std::chrono::steady_clock::now() > giveUp)
       throw std::runtime_error("the kernel module did not finish the map within " + std::to_string(limitSeconds) + " s");
     std::this_thread::sleep_for(std::chrono::milliseconds(200));

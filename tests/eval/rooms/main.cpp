@@ -35,6 +35,7 @@
 #include "tests/eval/rooms/RoomScoring.h"
 #include "tests/eval/rooms/ScoreBreakdown.h"
 #include "tests/eval/rooms/ServerSetRun.h"
+#include "tests/support/cluster/Interruption.h"
 #include "tools/common/CommandLine.h"
 
 namespace po = boost::program_options;
@@ -233,6 +234,7 @@ int main(int argc, char** argv) {
     if (options.serverSet && inProcessOptionsGiven(options))
       throw ConfigError("--server-set runs every module with its defaults: the detector and kernel options, "
                         "--true-poses, --max-tour-s, --list and --region-pictures need the in-process run");
+    if (options.serverSet) testing::catchInterruptions();  // so that a stopped run removes its server set's directory
     printHeader(classifier.has_value(), options.setup.truePoses, options.serverSet, options.growM);
     Totals totals;
     for (const std::string& map : maps) evaluate(map, options, classifier, totals);
