@@ -16,11 +16,16 @@ std::optional<std::size_t> objectAt(const std::vector<Rectangle2D>& objects, con
   return best;
 }
 
+std::optional<std::size_t> objectNamedAt(const Region& region, const std::vector<Rectangle2D>& objects,
+                                         const Eigen::Vector2d& namedAt) {
+  const Pose2D inRegion = between(region.frame, {namedAt.x(), namedAt.y(), 0.0});
+  return objectAt(objects, {inRegion.x, inRegion.y});
+}
+
 std::vector<std::string> objectNamesOf(const Region& region, const std::vector<Rectangle2D>& objects) {
   std::vector<std::string> names(objects.size());
   for (const auto& [name, namedAt] : region.objectNames) {
-    const Pose2D inRegion = between(region.frame, {namedAt.x(), namedAt.y(), 0.0});
-    const std::optional<std::size_t> index = objectAt(objects, {inRegion.x, inRegion.y});
+    const std::optional<std::size_t> index = objectNamedAt(region, objects, namedAt);
     if (index && names[*index].empty()) names[*index] = name;
   }
   return names;

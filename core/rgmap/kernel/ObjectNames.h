@@ -23,6 +23,11 @@ inline constexpr double kObjectNameReachM = 0.3;
 // The index of the object a name given at `point` belongs to; nullopt if none holds it.
 std::optional<std::size_t> objectAt(const std::vector<Rectangle2D>& objects, const Eigen::Vector2d& point);
 
+// The index of the object of `region` (`objects`: its description's, region frame) that a name
+// kept at `namedAt` (map frame, Region::objectNames) belongs to; nullopt if none holds it.
+std::optional<std::size_t> objectNamedAt(const Region& region, const std::vector<Rectangle2D>& objects,
+                                         const Eigen::Vector2d& namedAt);
+
 // The name of each of `objects` (the objects of `region`'s description, region frame); empty for
 // an unnamed one. Of two names for one object the first in name order counts.
 std::vector<std::string> objectNamesOf(const Region& region, const std::vector<Rectangle2D>& objects);

@@ -342,8 +342,7 @@ void RgMappingKernel::nameObject(RegionId region, const Eigen::Vector2d& atInReg
     throw InvalidArgumentError("region " + std::to_string(region) + " has no object at (" +
                                std::to_string(atInRegion.x()) + ", " + std::to_string(atInRegion.y()) + ")");
   const auto isThisObject = [&](const Eigen::Vector2d& namedAt) {
-    const Pose2D inRegion = between(r->second.frame, {namedAt.x(), namedAt.y(), 0.0});
-    return objectAt(objects, {inRegion.x, inRegion.y}) == index;
+    return objectNamedAt(r->second, objects, namedAt) == index;
   };
   const std::optional<NamedObject> holder = objectByName(name);
   if (!name.empty() && holder && !(holder->region == region && isThisObject(holder->namedAt)))

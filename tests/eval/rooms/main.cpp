@@ -9,8 +9,8 @@
 // where the means are over the maps' means and the pooled figures sum pixels over all maps. A
 // picture per map goes to --out (DebugImage.h; --region-pictures: one per region too); --list
 // prints every room, region and gateway (Listing.h). A line per map and one before the last score
-// the regions' 2D objects against the furniture (ObjectScoring.h). Trained HMMs (--models, if the file exists)
-// add hallway gateways to the narrow passages. The detector and kernel options default to the
+// the regions' 2D objects against the furniture (ObjectScoring.h). Trained HMMs (--models, if the
+// file exists) add hallway gateways to the narrow passages. The detector and kernel options default to the
 // modules' defaults (what the server set runs); --true-poses replaces SLAM by the true poses.
 // --server-set maps each floor plan as the issue asks, online with the full server set
 // (ServerSetRun.h: Simulator, ScanMapper, GatewayDetection and RG Mapping Kernel modules with their
