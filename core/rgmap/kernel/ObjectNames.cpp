@@ -31,4 +31,14 @@ std::vector<std::string> objectNamesOf(const Region& region, const std::vector<R
   return names;
 }
 
+void moveObjectNames(Region& from, const std::vector<Rectangle2D>& fromObjects, Region& to,
+                     const std::vector<Rectangle2D>& toObjects) {
+  std::erase_if(from.objectNames, [&](const auto& entry) {
+    const auto& [name, namedAt] = entry;
+    if (objectNamedAt(from, fromObjects, namedAt) || !objectNamedAt(to, toObjects, namedAt)) return false;
+    to.objectNames[name] = namedAt;
+    return true;
+  });
+}
+
 }  // namespace rgnav

@@ -32,4 +32,10 @@ std::optional<std::size_t> objectNamedAt(const Region& region, const std::vector
 // an unnamed one. Of two names for one object the first in name order counts.
 std::vector<std::string> objectNamesOf(const Region& region, const std::vector<Rectangle2D>& objects);
 
+// Moves to `to` every name of `from` whose object is no longer among `fromObjects` but is among
+// `toObjects` (each region's description's objects, in its own frame): the part split off a
+// region takes the names of the objects it took.
+void moveObjectNames(Region& from, const std::vector<Rectangle2D>& fromObjects, Region& to,
+                     const std::vector<Rectangle2D>& toObjects);
+
 }  // namespace rgnav

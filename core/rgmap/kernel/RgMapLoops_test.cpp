@@ -3,7 +3,8 @@
 // closes the loop, the two regions are merged and the door, with the same region on both sides
 // now, is neutralised; traversing it again changes nothing. A door missed on the way into a room
 // (figure 6.4) is repaired when it is later observed from inside the room, or only reported when
-// the robot leaves through it: the hallway's region is split where the path crossed the door.
+// the robot leaves through it: the hallway's region is split where the path crossed the door,
+// and an object of the room named before the split keeps its name in the room's new region.
 // A door the detector reports anew under another ID is the known door: traversed out of the room
 // it keeps the room and the hallway apart (its crossing points numbered from the room's side),
 // and seen again from the west of the ring it closes the loop as the first door would; seen
@@ -13,7 +14,9 @@
 #include <cppunit/extensions/HelperMacros.h>
 
 #include <algorithm>
+#include <utility>
 
+#include "core/rgmap/kernel/ObjectNames.h"
 #include "core/rgmap/kernel/RgMappingKernel.h"
 #include "core/rgmap/kernel/testing/SyntheticTour.h"
 
@@ -44,8 +47,9 @@ bool happened(const RgMappingKernel& k, RgMapEventKind kind) {
 
 // Into room 1 of hallwayWithTwoRooms() and around in it, door 11 unseen, then (after
 // `whileInside` was applied to the tour) back out to the hallway.
-SyntheticTour missedDoorTour(DoorReports whileInside) {
-  SyntheticTour tour(rgnav::testing::hallwayWithTwoRooms(), rgnav::testing::kTourDrift);
+SyntheticTour missedDoorTour(DoorReports whileInside,
+                             rgnav::testing::TourWorld world = rgnav::testing::hallwayWithTwoRooms()) {
+  SyntheticTour tour(std::move(world), rgnav::testing::kTourDrift);
   tour.setReports(11, DoorReports::None);
   tour.driveThrough({{1, 0.9}, {4, 0.9}, {4, 3.5}, {3, 4.5}, {5, 4.5}, {4, 3.5}});
   tour.setReports(11, whileInside);
@@ -78,6 +82,7 @@ class RgMapLoopsTest : public CppUnit::TestFixture {
   CPPUNIT_TEST(ringLoopMergesRegionsAndNeutralisesTheDoor);
   CPPUNIT_TEST(doorMissedOnEntryIsRepairedWhenSeenFromInside);
   CPPUNIT_TEST(doorMissedOnEntryIsRepairedWhenTraversedOut);
+  CPPUNIT_TEST(repairedRoomKeepsItsObjectNames);
   CPPUNIT_TEST(doorDetectedAnewIsTheKnownDoor);
   CPPUNIT_TEST(doorDetectedAnewClosesTheRing);
   CPPUNIT_TEST(doorSeenThroughAnotherDoorClosesNothing);
@@ -146,6 +151,28 @@ class RgMapLoopsTest : public CppUnit::TestFixture {
     feedAll(k, inputs, 0, inputs.size());
     checkRepairedRoom(k);
     CPPUNIT_ASSERT_EQUAL(std::size_t(1), k.state().gateways.begin()->second.traversalsFrom[kSideA]);
+  }
+
+  void repairedRoomKeepsItsObjectNames() {
+    // A 0.7 x 1.2 m cabinet against room 1's east wall, named while the room is part of the
+    // hallway's region.
+    rgnav::testing::TourWorld world = rgnav::testing::hallwayWithTwoRooms();
+    for (const rgnav::testing::Wall& w : rgnav::testing::boxWalls({5.65, 3.2}, 0.0, 0.7, 1.2)) world.walls.push_back(w);
+    const std::vector<KernelInput> inputs = missedDoorTour(DoorReports::All, std::move(world)).inputs();
+    RgMappingKernel k;
+    const std::size_t detected = nextEvent(inputs, 0, GatewayEventKind::Detected);
+    feedAll(k, inputs, 0, detected);
+    const Pose2D cabinet = between(k.state().regions.at(1).frame, {5.65, 3.2, 0.0});
+    k.nameObject(1, {cabinet.x, cabinet.y}, "cabinet");
+    CPPUNIT_ASSERT_EQUAL(RegionId(1), k.objectByName("cabinet")->region);
+
+    feedAll(k, inputs, detected, inputs.size());
+    checkRepairedRoom(k);
+    const auto named = k.objectByName("cabinet");
+    CPPUNIT_ASSERT(named && named->region == 2);
+    const std::vector<std::string> names = objectNamesOf(k.state().regions.at(2), k.description(2).objects);
+    CPPUNIT_ASSERT(std::find(names.begin(), names.end(), "cabinet") != names.end());
+    CPPUNIT_ASSERT(k.checkConsistency().empty());
   }
 
   void doorDetectedAnewIsTheKnownDoor() {

@@ -268,6 +268,8 @@ void RgMappingKernel::repairMissedCrossing(GatewayId id, std::size_t robotSide, 
         attachSide(state_, other, side, split, ref.attachedAt);
     }
   }
+  const std::vector<Rectangle2D> curObjects = description(cur).objects;
+  moveObjectNames(state_.regions.at(cur), curObjects, state_.regions.at(split), description(split).objects);
   state_.current = split;
   state_.visitStart = k;
   emitEvent(state_, K::GatewayRepaired, cur, split, id, k);

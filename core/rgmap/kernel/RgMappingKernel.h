@@ -36,9 +36,10 @@
 //     region crossed the gateway's line onto that side without a traversal being reported, the
 //     region is split at that crossing: the scans from there on (and the gateway sides attached
 //     since) form a new region on the robot's side, which then joins whatever region already lies
-//     there. Deliberate difference: the thesis leaves such errors to later loop closings
-//     ("temporary inconsistency"); we repair what the current visit shows and leave earlier visits
-//     to loop closing. Not for hallway areas (GatewayGeometry.h).
+//     there; the names of the objects it holds go with it. Deliberate difference: the thesis
+//     leaves such errors to later loop closings ("temporary inconsistency"); we repair what the
+//     current visit shows and leave earlier visits to loop closing. Not for hallway areas
+//     (GatewayGeometry.h).
 //   - Requests: merge two regions (e.g. "these are the same room", 6.1.1), name regions and objects (semantics),
 //     revise corrected poses (SLAM loop closures: descriptions follow, RegionModels.h), learn RG
 //     Graph costs (5.4).
