@@ -21,6 +21,7 @@
 #include "clientlibs/common/ClientOrb.h"
 #include "clientlibs/common/convert.h"
 #include "clientlibs/laser/LaserClient.h"
+#include "tests/support/cluster/Interruption.h"
 #include "tests/support/cluster/TestCluster.h"
 #include "watchdog/Spawn.h"
 #include "tools/common/CommandLine.h"
@@ -71,6 +72,7 @@ int main(int argc, char** argv) {
       ("hangs", po::value(&hangs)->default_value(hangs), "SIGSTOP hangs to time");
   try {
     if (!rgnav::parseCommandLine(argc, argv, desc)) return 0;
+    catchInterruptions();  // a stopped run still shuts its server set down and removes its directory
 
     TestCluster cluster({{"LogPlayback",
                           {TestCluster::program("rgnav-carmen-playback"), "--log",
@@ -116,6 +118,7 @@ int main(int argc, char** argv) {
     // Calls alternate one by one, so both kinds meet the same scheduler and cache conditions.
     std::vector<double> fetchTimes, echoTimes, pingTimes;
     for (int i = 0; i < rounds * calls; ++i) {
+      throwIfInterrupted();
       fetchTimes.push_back(timed([&] { laser.scan(1 + DataId(i) % scans); }));
       echoTimes.push_back(timed([&] { RGNavBench::Bytes_var b = echo->fetch(bytes); }));
       pingTimes.push_back(timed([&] { laser.ping(); }));

@@ -6,10 +6,10 @@
 #include <algorithm>
 #include <chrono>
 #include <random>
-#include <thread>
 
 #include "core/logs/OpenLog.h"
 #include "core/logs/ReplayMode.h"
+#include "tests/support/cluster/Interruption.h"
 
 namespace rgnav::testing {
 
@@ -25,7 +25,7 @@ FaultRecord injectFaults(TestCluster& cluster, const FaultPlan& plan) {
   const auto begin = Clock::now();
   FaultRecord record;
   for (std::size_t i = 0; i < faults.size(); ++i) {
-    std::this_thread::sleep_until(begin + std::chrono::duration_cast<Clock::duration>(interval * double(i + 1)));
+    sleepUntilOrInterrupted(begin + std::chrono::duration_cast<Clock::duration>(interval * double(i + 1)));
     if (i == faults.size() / 2) {
       const auto naming = cluster.waitFor("NameService", isRunning, "running");
       ::kill(static_cast<pid_t>(naming.pid), SIGKILL);

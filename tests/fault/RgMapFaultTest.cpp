@@ -17,6 +17,7 @@
 #include "clientlibs/rgmappingkernel/RgMappingKernelClient.h"
 #include "core/logs/OpenLog.h"
 #include "tests/fault/FaultSchedule.h"
+#include "tests/support/cluster/Interruption.h"
 #include "tests/support/Statistics.h"
 #include "tools/common/CommandLine.h"
 
@@ -59,7 +60,7 @@ json finishedMap(TestCluster& cluster, double limitSeconds) {
   const auto giveUp = std::chrono::steady_clock::now() + std::chrono::duration<double>(limitSeconds);
   while (!kernel.summary().endOfData) {
     if (std::chrono::steady_clock::now() > giveUp) throw std::runtime_error("the map was not finished in time");
-    std::this_thread::sleep_for(std::chrono::milliseconds(100));
+    sleepUntilOrInterrupted(std::chrono::steady_clock::now() + std::chrono::milliseconds(100));
   }
   kernel.exportMap(cluster.dir() + "/out", "map", false);
   std::ifstream in(cluster.dir() + "/out/map.rgmap.json");
@@ -123,6 +124,7 @@ int main(int argc, char** argv) {
        "largest allowed difference of a pose or position to the fault-free map");
   try {
     if (!parseCommandLine(argc, argv, desc)) return 0;
+    catchInterruptions();  // a stopped run still shuts its server set down and removes its directory
     const double replaySeconds = replayDuration(options.log, options.speed);
     const std::string fastBackoff = "defaults: {backoff_initial_s: 0.05, backoff_max_s: 0.4}";
 

@@ -23,6 +23,7 @@
 #include "core/logs/OpenLog.h"
 #include "core/slam/ScanMapper.h"
 #include "tests/fault/FaultSchedule.h"
+#include "tests/support/cluster/Interruption.h"
 #include "tests/support/cluster/TestCluster.h"
 #include "watchdog/Spawn.h"
 #include "tools/common/CommandLine.h"
@@ -112,6 +113,7 @@ int main(int argc, char** argv) {
       ("seed", po::value(&options.seed)->default_value(options.seed), "seed for the fault schedule");
   try {
     if (!rgnav::parseCommandLine(argc, argv, desc)) return 0;
+    catchInterruptions();  // a stopped run still shuts its server set down and removes its directory
 
     const bool mapping = options.target == "ScanMapper";
     if (!mapping && options.target != "LogPlayback") throw InvalidArgumentError("--target is LogPlayback or ScanMapper");
@@ -151,7 +153,7 @@ int main(int argc, char** argv) {
         std::cerr << "consumer did not finish" << std::endl;
         break;
       }
-      std::this_thread::sleep_for(std::chrono::milliseconds(50));
+      sleepUntilOrInterrupted(Clock::now() + std::chrono::milliseconds(50));
     }
 
     const std::vector<DataId> ids = recordedIds(cluster.dir() + "/received.txt");

@@ -8,6 +8,7 @@
 #include <iostream>
 
 #include "clientlibs/scanmapper/ScanMapperClient.h"
+#include "tests/support/cluster/Interruption.h"
 #include "tests/support/cluster/TestCluster.h"
 #include "tools/common/CommandLine.h"
 
@@ -25,6 +26,7 @@ int main(int argc, char** argv) {
       ("corrected", po::value(&corrected)->default_value(corrected), "Intel JSON companion ('' for none)");
   try {
     if (!parseCommandLine(argc, argv, desc)) return 0;
+    catchInterruptions();  // a stopped run still shuts its server set down and removes its directory
     std::vector<std::string> playback{TestCluster::program("rgnav-carmen-playback"), "--log", log, "--speed", "max"};
     if (!corrected.empty()) playback.insert(playback.end(), {"--corrected", corrected});
     TestCluster cluster({{"LogPlayback", playback, {"Laser", "Base"}},
@@ -36,6 +38,7 @@ int main(int argc, char** argv) {
     const auto start = std::chrono::steady_clock::now();
     DataId last = 0;
     for (;;) {
+      throwIfInterrupted();
       const CorrectedBatch batch = mapper.correctedSince(last, 500);
       if (!batch.scans.empty()) last = batch.scans.back().scan.id;
       if (batch.scans.empty() && batch.endOfData) break;

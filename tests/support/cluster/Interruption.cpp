@@ -4,8 +4,10 @@
 #include <signal.h>
 #include <string.h>
 
+#include <algorithm>
 #include <csignal>
 #include <string>
+#include <thread>
 
 namespace rgnav::testing {
 namespace {
@@ -30,6 +32,13 @@ void catchInterruptions() {
 void throwIfInterrupted() {
   if (const int signal = received; signal != 0)
     throw InterruptedError(std::string("interrupted by ") + strsignal(signal));
+}
+
+void sleepUntilOrInterrupted(std::chrono::steady_clock::time_point until) {
+  for (auto now = std::chrono::steady_clock::now(); now < until; now = std::chrono::steady_clock::now()) {
+    std::this_thread::sleep_until(std::min(until, now + std::chrono::milliseconds(50)));
+    throwIfInterrupted();
+  }
 }
 
 }  // namespace rgnav::testing

@@ -15,6 +15,7 @@
 #include <stdexcept>
 #include <thread>
 
+#include "tests/support/cluster/Interruption.h"
 #include "watchdog/ProcStat.h"
 #include "watchdog/Spawn.h"
 
@@ -136,6 +137,7 @@ ModuleProcessInfo TestCluster::waitFor(const std::string& name,
                                        const std::string& what, std::chrono::milliseconds limit) {
   const auto giveUp = std::chrono::steady_clock::now() + limit;
   for (;;) {
+    throwIfInterrupted();
     ModuleProcessInfo info = describe(name);
     if (pred(info)) return info;
     if (std::chrono::steady_clock::now() > giveUp)

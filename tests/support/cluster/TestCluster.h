@@ -59,7 +59,8 @@ class TestCluster {
 
   // Current state of one module; remembers its PID for the final cleanup.
   ModuleProcessInfo describe(const std::string& name);
-  // Waits (polling) until pred holds for the module; throws std::runtime_error after `limit`.
+  // Waits (polling) until pred holds for the module; throws std::runtime_error after `limit`
+  // and InterruptedError (Interruption.h) when the program caught a termination signal.
   ModuleProcessInfo waitFor(const std::string& name, const std::function<bool(const ModuleProcessInfo&)>& pred,
                             const std::string& what, std::chrono::milliseconds limit = std::chrono::seconds(20));
 
