@@ -268,8 +268,10 @@ void RgMappingKernel::repairMissedCrossing(GatewayId id, std::size_t robotSide, 
         attachSide(state_, other, side, split, ref.attachedAt);
     }
   }
-  const std::vector<Rectangle2D> curObjects = description(cur).objects;
-  moveObjectNames(state_.regions.at(cur), curObjects, state_.regions.at(split), description(split).objects);
+  if (!state_.regions.at(cur).objectNames.empty()) {  // descriptions cost time; most regions have no names
+    const std::vector<Rectangle2D> curObjects = description(cur).objects;
+    moveObjectNames(state_.regions.at(cur), curObjects, state_.regions.at(split), description(split).objects);
+  }
   state_.current = split;
   state_.visitStart = k;
   emitEvent(state_, K::GatewayRepaired, cur, split, id, k);
