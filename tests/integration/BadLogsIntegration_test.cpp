@@ -4,9 +4,7 @@
 // are served as far as they can be read, with the problem in the module's status, and the
 // server never crashes (the watchdog counts no restart).
 #include <cppunit/extensions/HelperMacros.h>
-#include <unistd.h>
 
-#include <filesystem>
 #include <fstream>
 #include <iterator>
 #include <random>
@@ -18,23 +16,8 @@
 
 using namespace rgnav;
 using namespace rgnav::testing;
-namespace fs = std::filesystem;
 
 namespace {
-
-// A temporary directory for the bad logs, removed at the end of the test.
-struct ScratchDir {
-  ScratchDir() : path(fs::temp_directory_path() / ("rgnav-badlogs-" + std::to_string(::getpid()))) {
-    fs::remove_all(path);
-    fs::create_directories(path);
-  }
-  ~ScratchDir() {
-    std::error_code ignored;
-    fs::remove_all(path, ignored);
-  }
-  std::string file(const std::string& name) const { return (path / name).string(); }
-  fs::path path;
-};
 
 std::string readFile(const std::string& path) {
   std::ifstream in(path, std::ios::binary);
@@ -70,17 +53,17 @@ class BadLogsIntegrationTest : public CppUnit::TestFixture {
 
  public:
   void testMissingFileIsFatalWithReason() {
-    ScratchDir scratch;
+    const ScratchDir scratch("rgnav-badlogs");
     expectFatalAtStart(scratch.file("no-such.log"), "No such file or directory");
   }
 
   void testDirectoryIsFatalWithReason() {
-    ScratchDir scratch;
+    const ScratchDir scratch("rgnav-badlogs");
     expectFatalAtStart(scratch.path.string(), "is a directory");
   }
 
   void testBinaryGarbageIsServedAsNoData() {
-    ScratchDir scratch;
+    const ScratchDir scratch("rgnav-badlogs");
     std::mt19937 random(7);
     std::string bytes(64 * 1024, '\0');
     for (char& c : bytes) c = static_cast<char>(random() & 0xff);
@@ -98,7 +81,7 @@ class BadLogsIntegrationTest : public CppUnit::TestFixture {
   }
 
   void testTruncatedGzipServesTheReadablePart() {
-    ScratchDir scratch;
+    const ScratchDir scratch("rgnav-badlogs");
     const std::string whole = readFile(intelLog());
     writeFile(scratch.file("truncated.log.gz"), whole.substr(0, whole.size() / 2));
 
@@ -116,7 +99,7 @@ class BadLogsIntegrationTest : public CppUnit::TestFixture {
   }
 
   void testGarbledLinesAreSkippedAndCounted() {
-    ScratchDir scratch;
+    const ScratchDir scratch("rgnav-badlogs");
     const std::vector<std::string> garbage = {"FLASER abc", "ODOM 1 2", "@@@ not a log line", "FLASER 3 1.0 2.0",
                                               "\x01\x02\x03\xff\xfe"};
     std::string clean, garbled;

@@ -1,12 +1,14 @@
 // Helpers shared by the integration tests: the playback module's command line, predicates on
-// the watchdog's view of a module, the watchdog's event log, reading a whole scan stream, and
-// whether a process is gone. Every wait is bounded.
+// the watchdog's view of a module, the watchdog's event log, reading a whole scan stream,
+// whether a process is gone, and a scratch directory. Every wait is bounded.
 #pragma once
 
 #include <sys/types.h>
+#include <unistd.h>
 
 #include <chrono>
 #include <cstdint>
+#include <filesystem>
 #include <optional>
 #include <stdexcept>
 #include <string>
@@ -76,6 +78,24 @@ inline std::vector<LaserScan> readAllScans(LaserClient& laser, std::uint32_t bat
   }
   throw std::runtime_error("the scan stream did not end");
 }
+
+// A directory of its own under the system's temporary directory ("<prefix>-<pid>"), removed with
+// everything in it when the object goes, also when a test fails.
+struct ScratchDir {
+  explicit ScratchDir(const std::string& prefix)
+      : path(std::filesystem::temp_directory_path() / (prefix + "-" + std::to_string(::getpid()))) {
+    std::filesystem::remove_all(path);
+    std::filesystem::create_directories(path);
+  }
+  ~ScratchDir() {
+    std::error_code ignored;
+    std::filesystem::remove_all(path, ignored);
+  }
+  ScratchDir(const ScratchDir&) = delete;
+  ScratchDir& operator=(const ScratchDir&) = delete;
+  std::string file(const std::string& name) const { return (path / name).string(); }
+  std::filesystem::path path;
+};
 
 // The process start time, to tell a PID from a later process that reuses it.
 inline std::uint64_t startTimeOf(std::int64_t pid) {

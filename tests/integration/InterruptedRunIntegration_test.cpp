@@ -5,7 +5,6 @@
 #include <cppunit/extensions/HelperMacros.h>
 #include <signal.h>
 #include <sys/wait.h>
-#include <unistd.h>
 
 #include <chrono>
 #include <cstdlib>
@@ -16,7 +15,7 @@
 #include <string>
 #include <thread>
 
-#include "tests/support/cluster/TestCluster.h"
+#include "tests/integration/IntegrationHelpers.h"
 #include "watchdog/Spawn.h"
 
 using namespace rgnav;
@@ -25,19 +24,6 @@ namespace fs = std::filesystem;
 using Clock = std::chrono::steady_clock;
 
 namespace {
-
-// The program's TMPDIR, removed at the end of the test.
-struct ScratchDir {
-  ScratchDir() : path(fs::temp_directory_path() / ("rgnav-interrupted-" + std::to_string(::getpid()))) {
-    fs::remove_all(path);
-    fs::create_directories(path);
-  }
-  ~ScratchDir() {
-    std::error_code ignored;
-    fs::remove_all(path, ignored);
-  }
-  fs::path path;
-};
 
 // Kills the program by PID if the test ends before it did.
 struct Child {
@@ -75,12 +61,12 @@ class InterruptedRunIntegrationTest : public CppUnit::TestFixture {
 
  public:
   void stoppedEvaluationRemovesItsServerSet() {
-    const ScratchDir scratch;
+    const ScratchDir scratch("rgnav-interrupted");  // the program's TMPDIR
     SpawnSpec spec;
     spec.argv = {TestCluster::program("rgnav-faulttest-rgmap"), "--models",
                  std::string(std::getenv("RGNAV_ROOT")) + "/config/gateways/gateway-hmms.txt"};
     spec.env = {{"TMPDIR", scratch.path.string()}};
-    spec.logFile = (scratch.path / "faulttest.log").string();
+    spec.logFile = scratch.file("faulttest.log");
     spec.parentDeathSignal = SIGKILL;
     Child child{spawnProcess(spec)};
 
