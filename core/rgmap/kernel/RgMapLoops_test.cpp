@@ -154,15 +154,14 @@ class RgMapLoopsTest : public CppUnit::TestFixture {
   }
 
   void repairedRoomKeepsItsObjectNames() {
-    // A 0.7 x 1.2 m cabinet against room 1's east wall, named while the room is part of the
-    // hallway's region.
-    rgnav::testing::TourWorld world = rgnav::testing::hallwayWithTwoRooms();
-    for (const rgnav::testing::Wall& w : rgnav::testing::boxWalls({5.65, 3.2}, 0.0, 0.7, 1.2)) world.walls.push_back(w);
-    const std::vector<KernelInput> inputs = missedDoorTour(DoorReports::All, std::move(world)).inputs();
+    // The cabinet in room 1, named while the room is part of the hallway's region.
+    const std::vector<KernelInput> inputs =
+        missedDoorTour(DoorReports::All, rgnav::testing::hallwayWithTwoRoomsAndCabinet()).inputs();
     RgMappingKernel k;
     const std::size_t detected = nextEvent(inputs, 0, GatewayEventKind::Detected);
     feedAll(k, inputs, 0, detected);
-    const Pose2D cabinet = between(k.state().regions.at(1).frame, {5.65, 3.2, 0.0});
+    const Eigen::Vector2d truth = rgnav::testing::cabinetCentre();
+    const Pose2D cabinet = between(k.state().regions.at(1).frame, {truth.x(), truth.y(), 0.0});
     k.nameObject(1, {cabinet.x, cabinet.y}, "cabinet");
     CPPUNIT_ASSERT_EQUAL(RegionId(1), k.objectByName("cabinet")->region);
 

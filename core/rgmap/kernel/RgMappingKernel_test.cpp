@@ -315,14 +315,13 @@ class RgMappingKernelTest : public CppUnit::TestFixture {
   }
 
   void objectsAreNamedAndFoundByName() {
-    // A 0.7 x 1.2 m cabinet against room 1's east wall.
-    rgnav::testing::TourWorld world = rgnav::testing::hallwayWithTwoRooms();
-    for (const rgnav::testing::Wall& w : rgnav::testing::boxWalls({5.65, 3.2}, 0.0, 0.7, 1.2)) world.walls.push_back(w);
-    const std::vector<rgnav::testing::KernelInput> inputs = twoRoomTour(world).inputs();
+    const Eigen::Vector2d truth = rgnav::testing::cabinetCentre();
+    const std::vector<rgnav::testing::KernelInput> inputs =
+        twoRoomTour(rgnav::testing::hallwayWithTwoRoomsAndCabinet()).inputs();
     RgMappingKernel k = rgnav::testing::mapped(inputs, inputs.size());
     const RegionView room = regionView(k, kRoom1);
     CPPUNIT_ASSERT_EQUAL(std::size_t(1), room.objects.size());
-    const Pose2D cabinet = between(room.summary.frame, {5.65, 3.2, 0.0});  // the true centre, region frame
+    const Pose2D cabinet = between(room.summary.frame, {truth.x(), truth.y(), 0.0});  // the true centre, region frame
     CPPUNIT_ASSERT_DOUBLES_EQUAL(cabinet.x, room.objects[0].pose.x, 0.1);
     CPPUNIT_ASSERT_DOUBLES_EQUAL(cabinet.y, room.objects[0].pose.y, 0.1);
     CPPUNIT_ASSERT(regionView(k, kHallway).objects.empty());
@@ -332,7 +331,7 @@ class RgMappingKernelTest : public CppUnit::TestFixture {
     CPPUNIT_ASSERT_EQUAL(std::string("files"), regionView(k, kRoom1).objects[0].name);
     const auto found = k.objectByName("files");
     CPPUNIT_ASSERT(found && found->region == kRoom1);
-    CPPUNIT_ASSERT((found->namedAt - Eigen::Vector2d(5.65, 3.2)).norm() < 0.1);  // map frame = true frame here
+    CPPUNIT_ASSERT((found->namedAt - truth).norm() < 0.1);  // map frame = true frame here
     CPPUNIT_ASSERT(!k.objectByName("desk"));
     CPPUNIT_ASSERT_THROW(k.nameObject(kRoom1, {cabinet.x + 2.0, cabinet.y}, "desk"), InvalidArgumentError);
     CPPUNIT_ASSERT_THROW(k.nameObject(99, {0.0, 0.0}, "desk"), InvalidArgumentError);
@@ -346,7 +345,7 @@ class RgMappingKernelTest : public CppUnit::TestFixture {
     CPPUNIT_ASSERT_EQUAL(kHallway, k.objectByName("cabinet")->region);
     const RgMappingKernel resumed({}, deserializeRgMap(serializeRgMap(k.state()), scanJournalLines(k.state())));
     CPPUNIT_ASSERT(resumed.objectByName("cabinet"));
-    const Pose2D inMerged = between(k.state().regions.at(kHallway).frame, {5.65, 3.2, 0.0});
+    const Pose2D inMerged = between(k.state().regions.at(kHallway).frame, {truth.x(), truth.y(), 0.0});
     k.nameObject(kHallway, {inMerged.x, inMerged.y}, "");
     CPPUNIT_ASSERT(!k.objectByName("cabinet"));
   }

@@ -33,6 +33,12 @@ TourWorld hallwayWithTwoRooms() {
   return w;
 }
 
+TourWorld hallwayWithTwoRoomsAndCabinet() {
+  TourWorld w = hallwayWithTwoRooms();
+  for (const Wall& side : boxWalls(cabinetCentre(), 0.0, 0.7, 1.2)) w.walls.push_back(side);
+  return w;
+}
+
 TourWorld ringCorridor() {
   TourWorld w;
   w.walls = boxWalls({5, 5}, 0.0, 10, 10);

@@ -41,6 +41,10 @@ struct TourWorld {
 // door 11 at x in [3.55, 4.45] and room 2 (x in [7, 11]) behind door 12 at x in [8.55, 9.45];
 // the rooms reach y = 6.
 TourWorld hallwayWithTwoRooms();
+// hallwayWithTwoRooms() with a 0.7 x 1.2 m cabinet against room 1's east wall, centred at
+// cabinetCentre().
+TourWorld hallwayWithTwoRoomsAndCabinet();
+inline Eigen::Vector2d cabinetCentre() { return {5.65, 3.2}; }
 // A ring corridor 2 m wide around a 6 x 6 m block (outer walls 10 x 10 m from the origin) with
 // door 21 across its south leg at x = 5 (y in [0.55, 1.45]).
 TourWorld ringCorridor();
