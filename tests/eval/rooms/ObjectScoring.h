@@ -3,10 +3,11 @@
 // 8-connected blobs). An object is on furniture if at least kMinFurnitureShare of its footprint
 // (its outline placed into the floor plan with the region's frame and mapToWorld, rasterised as
 // the object evaluation does, Detection.h) are furniture cells, so a room-sized rectangle with a
-// cabinet in it is not; the blobs those cells belong to count as found. Specks (blobs below minBlobCells) count for neither. Rectangles only find furniture whose
-// sides the laser sees as lines (cabinets, shelves, desks with side panels), not table or chair
-// legs, so the found share is low by design; the share of objects on furniture says whether
-// what the kernel calls an object is one.
+// cabinet in it is not; the blobs those cells belong to count as found. Specks (blobs below
+// minBlobCells) count for neither. Rectangles only find furniture whose sides the laser sees as
+// lines (cabinets, shelves, desks with side panels), not table or chair legs, so the found share
+// is low by design; the share of objects on furniture says whether what the kernel calls an
+// object is one.
 #pragma once
 
 #include <cstddef>

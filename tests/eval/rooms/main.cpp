@@ -10,9 +10,9 @@
 // picture per map goes to --out (DebugImage.h; --region-pictures: one per region too); --list
 // prints every room, region and gateway (Listing.h). A line per map and one before the last score
 // the regions' 2D objects against the furniture (ObjectScoring.h). Trained HMMs (--models, if the
-// file exists) add hallway gateways to the narrow passages. The detector and kernel options default to the
-// modules' defaults (what the server set runs); --true-poses replaces SLAM by the true poses.
-// --server-set maps each floor plan as the issue asks, online with the full server set
+// file exists) add hallway gateways to the narrow passages. The detector and kernel options
+// default to the modules' defaults (what the server set runs); --true-poses replaces SLAM by the
+// true poses. --server-set maps each floor plan as the issue asks, online with the full server set
 // (ServerSetRun.h: Simulator, ScanMapper, GatewayDetection and RG Mapping Kernel modules with their
 // own omniNames and watchdog on free loopback ports), each module with its defaults; without it
 // the same chain runs in process (MappingRun.h), which is faster, takes the detector and kernel
