@@ -35,7 +35,10 @@ CrossingData generateCrossingData(std::uint64_t seed, int layoutsPerClass, const
       ++data.sequences;
       data.observations += t.sequence.observations.size();
     }
-    if (layout % 2 == 1 && !gateway.empty()) target.testGateways[specs[i].gatewayClass].push_back(std::move(gateway));
+    if (layout % 2 == 1 && !gateway.empty()) {
+      target.testGateways[specs[i].gatewayClass].push_back(std::move(gateway));
+      target.testGatewayLayouts[specs[i].gatewayClass].push_back(layout);
+    }
   }
   return data;
 }

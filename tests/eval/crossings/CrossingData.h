@@ -30,6 +30,7 @@ struct EnvironmentData {
   ClassSequences test;        // odd layouts
   std::map<GatewayClass, std::size_t> testApproaches;  // approaches driven in the test layouts
   GatewaySequences testGateways;  // the gateway-class sequences of `test`, per layout (Hallway: none)
+  std::map<GatewayClass, std::vector<int>> testGatewayLayouts;  // the layout of each testGateways entry
 };
 
 struct CrossingData {

@@ -48,6 +48,22 @@ void addFusedClassifications(const HmmClassifier& classifier, const GatewaySeque
   }
 }
 
+std::vector<LayoutErrors> layoutErrors(const HmmClassifier& classifier, const EnvironmentData& data) {
+  std::vector<LayoutErrors> errors;
+  for (const auto& [truth, perGateway] : data.testGateways) {
+    const std::vector<int>& layouts = data.testGatewayLayouts.at(truth);
+    for (std::size_t g = 0; g < perGateway.size(); ++g) {
+      LayoutErrors e{truth, layouts.at(g), perGateway[g].size(), {}};
+      for (const GatewayObservationSequence& s : perGateway[g]) {
+        const GatewayClass decided = classifier.classify(s).best();
+        if (decided != truth) ++e.decided[decided];
+      }
+      if (!e.decided.empty()) errors.push_back(std::move(e));
+    }
+  }
+  return errors;
+}
+
 // The lowest rate of a gateway class (counter-class excluded) in `m`; NaN if it has none.
 double minGatewayClassRate(const GatewayConfusionMatrix& m) {
   double lowest = std::numeric_limits<double>::quiet_NaN();
@@ -85,8 +101,11 @@ CrossingResults evaluateCrossings(const CrossingData& data, const HmmClassifier&
   const auto& environments = thesisEnvironments();
   for (std::size_t e = 0; e < environments.size(); ++e) {
     const ClassSequences& test = data.environments[e].test;
-    EnvironmentResults& r = results.environments.emplace_back(EnvironmentResults{
-        .hmm = GatewayConfusionMatrix(hmm.classes()), .pairs = {}, .fused = GatewayConfusionMatrix(hmm.classes())});
+    EnvironmentResults& r = results.environments.emplace_back(
+        EnvironmentResults{.hmm = GatewayConfusionMatrix(hmm.classes()),
+                           .pairs = {},
+                           .fused = GatewayConfusionMatrix(hmm.classes()),
+                           .layoutErrors = layoutErrors(hmm, data.environments[e])});
     addWeightClassifications(test, r);
     addHmmClassifications(hmm, test, r.hmm);
     addHmmClassifications(hmm, test, results.hmmAll);

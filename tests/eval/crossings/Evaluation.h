@@ -9,10 +9,12 @@
 // gateway (one layout of a gateway class) is classified once from the sequences of all its
 // approaches together (HmmClassifier::classify of several sequences), as a robot that passes a
 // gateway several times would; its rates count gateways, not sequences, and are reported beside
-// the per-sequence rates, never instead of them.
+// the per-sequence rates, never instead of them. The HMM errors are also listed per test gateway:
+// in clutter they come in groups, most of them from one or two layouts of a class.
 #pragma once
 
 #include <array>
+#include <map>
 #include <utility>
 #include <vector>
 
@@ -37,6 +39,14 @@ inline constexpr std::array<std::pair<GatewayClass, GatewayClass>, 4> kTable43Pa
     {GatewayClass::LTurn, GatewayClass::XCrossing},
 }};
 
+// The HMM errors on the test sequences of one gateway (one clutter layout of a class).
+struct LayoutErrors {
+  GatewayClass truth = GatewayClass::Hallway;
+  int layout = 0;
+  std::size_t sequences = 0;
+  std::map<GatewayClass, std::size_t> decided;  // the wrong decisions, per decided class
+};
+
 struct EnvironmentResults {
   GatewayConfusionMatrix asc{gatewayClassesOnly()};
   GatewayConfusionMatrix socLast{gatewayClassesOnly()};
@@ -44,6 +54,7 @@ struct EnvironmentResults {
   GatewayConfusionMatrix hmm;
   std::vector<GatewayConfusionMatrix> pairs;  // one per kTable43Pairs entry
   GatewayConfusionMatrix fused;               // one decision per test gateway (Bayes fusion)
+  std::vector<LayoutErrors> layoutErrors;     // the test gateways with at least one HMM error
 };
 
 struct CrossingResults {

@@ -115,6 +115,26 @@ void printConfusionMatrices(std::ostream& out, const CrossingResults& results) {
   for (std::size_t e = 0; e < environments.size(); ++e) print(environments[e].name, results.environments[e].hmm);
 }
 
+void printLayoutErrors(std::ostream& out, const CrossingResults& results) {
+  out << "Multi-class HMM errors per test gateway (one clutter layout of a class): wrong of its test sequences, "
+         "and the classes decided instead\n";
+  const auto& environments = thesisEnvironments();
+  for (std::size_t e = 0; e < environments.size(); ++e) {
+    for (const LayoutErrors& errors : results.environments[e].layoutErrors) {
+      std::size_t wrong = 0;
+      for (const auto& [c, n] : errors.decided) wrong += n;
+      char line[160];
+      std::snprintf(line, sizeof line, "  %-24s %-12s layout %2d: %2zu of %2zu wrong, decided",
+                    environments[e].name.c_str(), std::string(gatewayClassName(errors.truth)).c_str(), errors.layout,
+                    wrong, errors.sequences);
+      out << line;
+      for (const auto& [c, n] : errors.decided) out << " " << gatewayClassName(c) << " " << n;
+      out << "\n";
+    }
+  }
+  out << "\n";
+}
+
 void printFusion(std::ostream& out, const CrossingResults& results) {
   out << "Bayes fusion per gateway (thesis 4.1.4): every test gateway classified once from the sequences of all\n"
       << "its approaches; rate = gateways recognised / gateways (not comparable with the per-sequence rates)\n";

@@ -5,7 +5,8 @@
 // configuration on the validation data (HmmSelection), trains the HMMs on all training data and
 // prints table 4.2 (SOC last, SOC last but one, ASC, plus the multi-class HMM; with the number
 // of test sequences out of the approaches driven), table 4.3 (pairwise HMMs), the full
-// multi-class HMM confusion matrices and the rates of the Bayes fusion per gateway, then
+// multi-class HMM confusion matrices, the HMM errors per test gateway (clutter layout) and the
+// rates of the Bayes fusion per gateway, then
 //   fused (…): hmm_fused_min_class_acc_2m_cluttered=…
 //   crossings: hmm_min_class_acc_2m_cluttered=… hmm_mean_acc=…
 // hmm_min_class_acc_2m_cluttered: the lowest HMM recognition rate of the seven gateway classes
@@ -102,6 +103,7 @@ int main(int argc, char** argv) {
     printTable42(std::cout, data, results);
     printTable43(std::cout, results);
     printConfusionMatrices(std::cout, results);
+    printLayoutErrors(std::cout, results);
     printFusion(std::cout, results);
     std::printf("fused (Bayes fusion per gateway, not per sequence): hmm_fused_min_class_acc_2m_cluttered=%.3f\n",
                 results.fusedMinClassRate2mCluttered);
