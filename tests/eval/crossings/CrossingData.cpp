@@ -31,14 +31,12 @@ CrossingData generateCrossingData(std::uint64_t seed, int layoutsPerClass, const
     std::vector<GatewayObservationSequence> gateway;
     for (const LabelledTrack& t : perScenario[i].tracks) {
       split[t.truth].push_back(toObservationSequence(t.sequence));
+      if (layout % 2 == 1) target.testLayouts[t.truth].push_back(layout);
       if (t.truth != GatewayClass::Hallway) gateway.push_back(split[t.truth].back());
       ++data.sequences;
       data.observations += t.sequence.observations.size();
     }
-    if (layout % 2 == 1 && !gateway.empty()) {
-      target.testGateways[specs[i].gatewayClass].push_back(std::move(gateway));
-      target.testGatewayLayouts[specs[i].gatewayClass].push_back(layout);
-    }
+    if (layout % 2 == 1 && !gateway.empty()) target.testGateways[specs[i].gatewayClass].push_back(std::move(gateway));
   }
   return data;
 }

@@ -28,9 +28,9 @@ struct EnvironmentData {
   ClassSequences fit;         // layout % 4 == 0
   ClassSequences validation;  // layout % 4 == 2
   ClassSequences test;        // odd layouts
+  std::map<GatewayClass, std::vector<int>> testLayouts;  // the clutter layout of each sequence of `test`
   std::map<GatewayClass, std::size_t> testApproaches;  // approaches driven in the test layouts
   GatewaySequences testGateways;  // the gateway-class sequences of `test`, per layout (Hallway: none)
-  std::map<GatewayClass, std::vector<int>> testGatewayLayouts;  // the layout of each testGateways entry
 };
 
 struct CrossingData {

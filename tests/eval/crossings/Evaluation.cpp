@@ -48,18 +48,40 @@ void addFusedClassifications(const HmmClassifier& classifier, const GatewaySeque
   }
 }
 
-std::vector<LayoutErrors> layoutErrors(const HmmClassifier& classifier, const EnvironmentData& data) {
+// The decision of `classifier` for every sequence of `test` whose true class is in `classes`, per
+// true class in `test` order.
+using ClassDecisions = std::map<GatewayClass, std::vector<GatewayClass>>;
+ClassDecisions hmmDecisions(const HmmClassifier& classifier, const ClassSequences& test,
+                            const std::vector<GatewayClass>& classes) {
+  ClassDecisions decisions;
+  for (const auto& [truth, sequences] : test) {
+    if (std::find(classes.begin(), classes.end(), truth) == classes.end()) continue;
+    std::vector<GatewayClass>& decided = decisions[truth];
+    for (const GatewayObservationSequence& s : sequences) decided.push_back(classifier.classify(s).best());
+  }
+  return decisions;
+}
+
+void addDecisions(const ClassDecisions& decisions, GatewayConfusionMatrix& matrix) {
+  for (const auto& [truth, decided] : decisions)
+    for (const GatewayClass d : decided) matrix.add(truth, d);
+}
+
+// The gateway-class decisions grouped by the test layout their sequence was recorded in.
+std::vector<LayoutErrors> layoutErrors(const ClassDecisions& decisions,
+                                       const std::map<GatewayClass, std::vector<int>>& layouts) {
   std::vector<LayoutErrors> errors;
-  for (const auto& [truth, perGateway] : data.testGateways) {
-    const std::vector<int>& layouts = data.testGatewayLayouts.at(truth);
-    for (std::size_t g = 0; g < perGateway.size(); ++g) {
-      LayoutErrors e{truth, layouts.at(g), perGateway[g].size(), {}};
-      for (const GatewayObservationSequence& s : perGateway[g]) {
-        const GatewayClass decided = classifier.classify(s).best();
-        if (decided != truth) ++e.decided[decided];
-      }
-      if (!e.decided.empty()) errors.push_back(std::move(e));
+  for (const auto& [truth, decided] : decisions) {
+    if (truth == GatewayClass::Hallway) continue;
+    std::map<int, LayoutErrors> perLayout;
+    const std::vector<int>& layoutOf = layouts.at(truth);
+    for (std::size_t i = 0; i < decided.size(); ++i) {
+      LayoutErrors& e = perLayout.try_emplace(layoutOf.at(i), LayoutErrors{truth, layoutOf.at(i), 0, {}}).first->second;
+      ++e.sequences;
+      if (decided[i] != truth) ++e.decided[decided[i]];
     }
+    for (auto& [layout, e] : perLayout)
+      if (!e.decided.empty()) errors.push_back(std::move(e));
   }
   return errors;
 }
@@ -78,11 +100,7 @@ double minGatewayClassRate(const GatewayConfusionMatrix& m) {
 
 void addHmmClassifications(const HmmClassifier& classifier, const ClassSequences& test,
                            GatewayConfusionMatrix& matrix) {
-  const std::vector<GatewayClass>& classes = matrix.classes();
-  for (const auto& [truth, sequences] : test) {
-    if (std::find(classes.begin(), classes.end(), truth) == classes.end()) continue;
-    for (const GatewayObservationSequence& s : sequences) matrix.add(truth, classifier.classify(s).best());
-  }
+  addDecisions(hmmDecisions(classifier, test, matrix.classes()), matrix);
 }
 
 std::vector<GatewayClass> gatewayClassesOnly() {
@@ -101,21 +119,22 @@ CrossingResults evaluateCrossings(const CrossingData& data, const HmmClassifier&
   const auto& environments = thesisEnvironments();
   for (std::size_t e = 0; e < environments.size(); ++e) {
     const ClassSequences& test = data.environments[e].test;
+    const ClassDecisions decided = hmmDecisions(hmm, test, hmm.classes());  // once for every multi-class figure
     EnvironmentResults& r = results.environments.emplace_back(
         EnvironmentResults{.hmm = GatewayConfusionMatrix(hmm.classes()),
                            .pairs = {},
                            .fused = GatewayConfusionMatrix(hmm.classes()),
-                           .layoutErrors = layoutErrors(hmm, data.environments[e])});
+                           .layoutErrors = layoutErrors(decided, data.environments[e].testLayouts)});
     addWeightClassifications(test, r);
-    addHmmClassifications(hmm, test, r.hmm);
-    addHmmClassifications(hmm, test, results.hmmAll);
+    addDecisions(decided, r.hmm);
+    addDecisions(decided, results.hmmAll);
     for (std::size_t p = 0; p < kTable43Pairs.size(); ++p) {
       r.pairs.emplace_back(std::vector<GatewayClass>{kTable43Pairs[p].first, kTable43Pairs[p].second});
       addHmmClassifications(pairwise[p], test, r.pairs.back());
     }
     addFusedClassifications(hmm, data.environments[e].testGateways, r.fused);
     if (!is2mCluttered(environments[e])) continue;
-    addHmmClassifications(hmm, test, results.hmm2mCluttered);
+    addDecisions(decided, results.hmm2mCluttered);
     results.hmmMinClassRate2mCluttered = std::fmin(results.hmmMinClassRate2mCluttered, minGatewayClassRate(r.hmm));
     results.fusedMinClassRate2mCluttered =
         std::fmin(results.fusedMinClassRate2mCluttered, minGatewayClassRate(r.fused));
