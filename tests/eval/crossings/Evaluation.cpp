@@ -68,22 +68,30 @@ void addDecisions(const ClassDecisions& decisions, GatewayConfusionMatrix& matri
 }
 
 // The gateway-class decisions grouped by the test layout their sequence was recorded in.
-std::vector<LayoutErrors> layoutErrors(const ClassDecisions& decisions,
-                                       const std::map<GatewayClass, std::vector<int>>& layouts) {
-  std::vector<LayoutErrors> errors;
+std::vector<GatewayDecisions> gatewayDecisions(const ClassDecisions& decisions,
+                                               const std::map<GatewayClass, std::vector<int>>& layouts) {
+  std::vector<GatewayDecisions> gateways;
   for (const auto& [truth, decided] : decisions) {
     if (truth == GatewayClass::Hallway) continue;
-    std::map<int, LayoutErrors> perLayout;
+    std::map<int, GatewayDecisions> perLayout;
     const std::vector<int>& layoutOf = layouts.at(truth);
     for (std::size_t i = 0; i < decided.size(); ++i) {
-      LayoutErrors& e = perLayout.try_emplace(layoutOf.at(i), LayoutErrors{truth, layoutOf.at(i), 0, {}}).first->second;
-      ++e.sequences;
-      if (decided[i] != truth) ++e.decided[decided[i]];
+      GatewayDecisions& g =
+          perLayout.try_emplace(layoutOf.at(i), GatewayDecisions{truth, layoutOf.at(i), 0, {}}).first->second;
+      ++g.sequences;
+      if (decided[i] != truth) ++g.wrong[decided[i]];
     }
-    for (auto& [layout, e] : perLayout)
-      if (!e.decided.empty()) errors.push_back(std::move(e));
+    for (auto& [layout, g] : perLayout) gateways.push_back(std::move(g));
   }
-  return errors;
+  return gateways;
+}
+
+// Appends to `groups` one group per gateway class of `gateways`: the tallies of its test gateways.
+void addBootstrapGroups(const std::vector<GatewayDecisions>& gateways, std::vector<std::vector<GatewayTally>>& groups) {
+  std::map<GatewayClass, std::vector<GatewayTally>> perClass;
+  for (const GatewayDecisions& g : gateways)
+    perClass[g.truth].push_back({g.sequences - g.wrongCount(), g.sequences});
+  for (auto& [truth, tallies] : perClass) groups.push_back(std::move(tallies));
 }
 
 // The lowest rate of a gateway class (counter-class excluded) in `m`; NaN if it has none.
@@ -97,6 +105,12 @@ double minGatewayClassRate(const GatewayConfusionMatrix& m) {
 }
 
 }  // namespace
+
+std::size_t GatewayDecisions::wrongCount() const {
+  std::size_t n = 0;
+  for (const auto& [decided, count] : wrong) n += count;
+  return n;
+}
 
 void addHmmClassifications(const HmmClassifier& classifier, const ClassSequences& test,
                            GatewayConfusionMatrix& matrix) {
@@ -115,7 +129,8 @@ CrossingResults evaluateCrossings(const CrossingData& data, const HmmClassifier&
   for (const auto& [a, b] : kTable43Pairs) pairwise.push_back(pairwiseClassifier(hmm, a, b));
   const double none = std::numeric_limits<double>::quiet_NaN();
   CrossingResults results{
-      {}, GatewayConfusionMatrix(hmm.classes()), GatewayConfusionMatrix(hmm.classes()), none, none, none};
+      {}, GatewayConfusionMatrix(hmm.classes()), GatewayConfusionMatrix(hmm.classes()), none, none, none, {}};
+  std::vector<std::vector<GatewayTally>> bootstrapGroups;  // per 2 m cluttered environment and class
   const auto& environments = thesisEnvironments();
   for (std::size_t e = 0; e < environments.size(); ++e) {
     const ClassSequences& test = data.environments[e].test;
@@ -124,7 +139,7 @@ CrossingResults evaluateCrossings(const CrossingData& data, const HmmClassifier&
         EnvironmentResults{.hmm = GatewayConfusionMatrix(hmm.classes()),
                            .pairs = {},
                            .fused = GatewayConfusionMatrix(hmm.classes()),
-                           .layoutErrors = layoutErrors(decided, data.environments[e].testLayouts)});
+                           .gateways = gatewayDecisions(decided, data.environments[e].testLayouts)});
     addWeightClassifications(test, r);
     addDecisions(decided, r.hmm);
     addDecisions(decided, results.hmmAll);
@@ -135,11 +150,16 @@ CrossingResults evaluateCrossings(const CrossingData& data, const HmmClassifier&
     addFusedClassifications(hmm, data.environments[e].testGateways, r.fused);
     if (!is2mCluttered(environments[e])) continue;
     addDecisions(decided, results.hmm2mCluttered);
+    addBootstrapGroups(r.gateways, bootstrapGroups);
     results.hmmMinClassRate2mCluttered = std::fmin(results.hmmMinClassRate2mCluttered, minGatewayClassRate(r.hmm));
     results.fusedMinClassRate2mCluttered =
         std::fmin(results.fusedMinClassRate2mCluttered, minGatewayClassRate(r.fused));
   }
   if (results.hmmAll.total() > 0) results.hmmMeanClassRate = results.hmmAll.meanClassAccuracy();
+  if (!bootstrapGroups.empty()) {
+    results.hmmMinClassInterval2mCluttered =
+        bootstrapLowestRate(bootstrapGroups, kLayoutResamples, kLayoutIntervalLevel, kLayoutBootstrapSeed);
+  }
   return results;
 }
 

@@ -10,17 +10,21 @@
 // approaches together (HmmClassifier::classify of several sequences), as a robot that passes a
 // gateway several times would; its rates count gateways, not sequences, and are reported beside
 // the per-sequence rates, never instead of them. The HMM errors are also listed per test gateway:
-// in clutter they come in groups, most of them from one or two layouts of a class.
+// in clutter they come in groups, most of them from one or two layouts of a class; so the lowest
+// class rate in the 2 m cluttered hallways comes with its spread over the test layouts.
 #pragma once
 
 #include <array>
+#include <cstdint>
 #include <map>
+#include <optional>
 #include <utility>
 #include <vector>
 
 #include "core/gateways/classify/GatewayConfusionMatrix.h"
 #include "core/gateways/classify/HmmClassifier.h"
 #include "tests/eval/crossings/CrossingData.h"
+#include "tests/eval/crossings/LayoutBootstrap.h"
 
 namespace rgnav {
 
@@ -39,12 +43,14 @@ inline constexpr std::array<std::pair<GatewayClass, GatewayClass>, 4> kTable43Pa
     {GatewayClass::LTurn, GatewayClass::XCrossing},
 }};
 
-// The HMM errors on the test sequences of one gateway (one clutter layout of a class).
-struct LayoutErrors {
+// The HMM decisions on the test sequences of one gateway (one clutter layout of a class).
+struct GatewayDecisions {
   GatewayClass truth = GatewayClass::Hallway;
   int layout = 0;
   std::size_t sequences = 0;
-  std::map<GatewayClass, std::size_t> decided;  // the wrong decisions, per decided class
+  std::map<GatewayClass, std::size_t> wrong;  // the wrong decisions, per decided class
+
+  std::size_t wrongCount() const;
 };
 
 struct EnvironmentResults {
@@ -54,7 +60,7 @@ struct EnvironmentResults {
   GatewayConfusionMatrix hmm;
   std::vector<GatewayConfusionMatrix> pairs;  // one per kTable43Pairs entry
   GatewayConfusionMatrix fused;               // one decision per test gateway (Bayes fusion)
-  std::vector<LayoutErrors> layoutErrors;     // the test gateways with at least one HMM error
+  std::vector<GatewayDecisions> gateways;     // every test gateway of a gateway class
 };
 
 struct CrossingResults {
@@ -68,7 +74,15 @@ struct CrossingResults {
   double hmmMeanClassRate = 0.0;
   // The same minimum for the fused decisions (gateways recognised / gateways); NaN without any.
   double fusedMinClassRate2mCluttered = 0.0;
+  // The spread of hmmMinClassRate2mCluttered over the test layouts (LayoutBootstrap.h); unset
+  // without test gateways.
+  std::optional<RateInterval> hmmMinClassInterval2mCluttered;
 };
+
+// The bootstrap behind hmmMinClassInterval2mCluttered: resamples, interval level and seed.
+inline constexpr int kLayoutResamples = 2000;
+inline constexpr double kLayoutIntervalLevel = 0.9;
+inline constexpr std::uint64_t kLayoutBootstrapSeed = 1;
 
 // Throws NotAvailableError if a class of kTable43Pairs has no HMM (no training sequences).
 CrossingResults evaluateCrossings(const CrossingData& data, const HmmClassifier& hmm);

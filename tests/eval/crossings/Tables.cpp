@@ -120,15 +120,14 @@ void printLayoutErrors(std::ostream& out, const CrossingResults& results) {
          "and the classes decided instead\n";
   const auto& environments = thesisEnvironments();
   for (std::size_t e = 0; e < environments.size(); ++e) {
-    for (const LayoutErrors& errors : results.environments[e].layoutErrors) {
-      std::size_t wrong = 0;
-      for (const auto& [c, n] : errors.decided) wrong += n;
+    for (const GatewayDecisions& gateway : results.environments[e].gateways) {
+      if (gateway.wrong.empty()) continue;
       char line[160];
       std::snprintf(line, sizeof line, "  %-24s %-12s layout %2d: %2zu of %2zu wrong, decided",
-                    environments[e].name.c_str(), std::string(gatewayClassName(errors.truth)).c_str(), errors.layout,
-                    wrong, errors.sequences);
+                    environments[e].name.c_str(), std::string(gatewayClassName(gateway.truth)).c_str(), gateway.layout,
+                    gateway.wrongCount(), gateway.sequences);
       out << line;
-      for (const auto& [c, n] : errors.decided) out << " " << gatewayClassName(c) << " " << n;
+      for (const auto& [c, n] : gateway.wrong) out << " " << gatewayClassName(c) << " " << n;
       out << "\n";
     }
   }

@@ -8,12 +8,14 @@
 // multi-class HMM confusion matrices, the HMM errors per test gateway (clutter layout) and the
 // rates of the Bayes fusion per gateway, then
 //   fused (…): hmm_fused_min_class_acc_2m_cluttered=…
+//   spread over the test layouts (…): hmm_min_class_acc_2m_cluttered 90% interval=[…, …]
 //   crossings: hmm_min_class_acc_2m_cluttered=… hmm_mean_acc=…
 // hmm_min_class_acc_2m_cluttered: the lowest HMM recognition rate of the seven gateway classes
 // (Hallway, the counter-class, excluded) per sequence in the 2 m slightly and strongly
 // cluttered environments; hmm_mean_acc: the mean per-class HMM rate over all test sequences,
 // counter-class included; hmm_fused_min_class_acc_2m_cluttered: the lowest rate of the fused
-// decisions, one per test gateway (Evaluation.h), a separate figure.
+// decisions, one per test gateway (Evaluation.h), a separate figure; the interval: how far
+// hmm_min_class_acc_2m_cluttered moves when other test layouts are drawn (LayoutBootstrap.h).
 // With --save-models PATH the trained classifier is written as an HMM model file
 // (core/gateways/classify HmmModelFile.h); config/gateways/gateway-hmms.txt is made so.
 // Where we differ from the thesis: one set of HMMs is trained on the training data of all eight
@@ -107,6 +109,11 @@ int main(int argc, char** argv) {
     printFusion(std::cout, results);
     std::printf("fused (Bayes fusion per gateway, not per sequence): hmm_fused_min_class_acc_2m_cluttered=%.3f\n",
                 results.fusedMinClassRate2mCluttered);
+    if (const auto& interval = results.hmmMinClassInterval2mCluttered) {
+      std::printf("spread over the test layouts (cluster bootstrap of the test gateways, %d resamples): "
+                  "hmm_min_class_acc_2m_cluttered %.0f%% interval=[%.3f, %.3f]\n",
+                  kLayoutResamples, 100.0 * kLayoutIntervalLevel, interval->low, interval->high);
+    }
     std::printf("crossings: hmm_min_class_acc_2m_cluttered=%.3f hmm_mean_acc=%.3f\n", results.hmmMinClassRate2mCluttered,
                 results.hmmMeanClassRate);
     return 0;
