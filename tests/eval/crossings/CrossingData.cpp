@@ -28,15 +28,12 @@ CrossingData generateCrossingData(std::uint64_t seed, int layoutsPerClass, const
     EnvironmentData& target = data.environments[env];
     ClassSequences& split = layout % 2 == 1 ? target.test : layout % 4 == 0 ? target.fit : target.validation;
     if (layout % 2 == 1) target.testApproaches[specs[i].gatewayClass] += perScenario[i].approaches;
-    std::vector<GatewayObservationSequence> gateway;
     for (const LabelledTrack& t : perScenario[i].tracks) {
       split[t.truth].push_back(toObservationSequence(t.sequence));
       if (layout % 2 == 1) target.testLayouts[t.truth].push_back(layout);
-      if (t.truth != GatewayClass::Hallway) gateway.push_back(split[t.truth].back());
       ++data.sequences;
       data.observations += t.sequence.observations.size();
     }
-    if (layout % 2 == 1 && !gateway.empty()) target.testGateways[specs[i].gatewayClass].push_back(std::move(gateway));
   }
   return data;
 }

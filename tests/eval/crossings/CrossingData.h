@@ -4,9 +4,8 @@
 // environment by clutter layout, so that no test sequence was recorded in a world the HMMs were
 // trained in: of the layouts of one environment and class, odd ones are test data, even ones
 // training data, and of those every other one (layout % 4 == 2) is held out to choose the HMM
-// configuration (validation). For the Bayes fusion of several sequences of one gateway
-// (Evaluation.h) the test sequences are also kept per gateway: per test layout of a gateway
-// class, its sequences of that class from all approaches.
+// configuration (validation). The clutter layout of every test sequence is kept beside it: the
+// test sequences of one gateway (Evaluation.h) are those of its class and layout.
 #pragma once
 
 #include <array>
@@ -21,8 +20,6 @@
 namespace rgnav {
 
 using ClassSequences = std::map<GatewayClass, std::vector<GatewayObservationSequence>>;
-// Per class, one entry per gateway: the sequences recorded of it.
-using GatewaySequences = std::map<GatewayClass, std::vector<std::vector<GatewayObservationSequence>>>;
 
 struct EnvironmentData {
   ClassSequences fit;         // layout % 4 == 0
@@ -30,7 +27,6 @@ struct EnvironmentData {
   ClassSequences test;        // odd layouts
   std::map<GatewayClass, std::vector<int>> testLayouts;  // the clutter layout of each sequence of `test`
   std::map<GatewayClass, std::size_t> testApproaches;  // approaches driven in the test layouts
-  GatewaySequences testGateways;  // the gateway-class sequences of `test`, per layout (Hallway: none)
 };
 
 struct CrossingData {

@@ -38,13 +38,16 @@ HmmClassifier pairwiseClassifier(const HmmClassifier& all, GatewayClass a, Gatew
   return HmmClassifier(std::move(pair));
 }
 
-void addFusedClassifications(const HmmClassifier& classifier, const GatewaySequences& gateways,
-                             GatewayConfusionMatrix& matrix) {
+// One fused decision per test gateway: the sequences of a gateway class grouped by their layout.
+void addFusedClassifications(const HmmClassifier& classifier, const ClassSequences& test,
+                             const std::map<GatewayClass, std::vector<int>>& layouts, GatewayConfusionMatrix& matrix) {
   const std::vector<GatewayClass>& classes = matrix.classes();
-  for (const auto& [truth, perGateway] : gateways) {
-    if (std::find(classes.begin(), classes.end(), truth) == classes.end()) continue;
-    for (const std::vector<GatewayObservationSequence>& sequences : perGateway)
-      matrix.add(truth, classifier.classify(sequences).best());
+  for (const auto& [truth, sequences] : test) {
+    if (truth == GatewayClass::Hallway || std::find(classes.begin(), classes.end(), truth) == classes.end()) continue;
+    std::map<int, std::vector<GatewayObservationSequence>> perGateway;
+    const std::vector<int>& layoutOf = layouts.at(truth);
+    for (std::size_t i = 0; i < sequences.size(); ++i) perGateway[layoutOf.at(i)].push_back(sequences[i]);
+    for (const auto& [layout, gateway] : perGateway) matrix.add(truth, classifier.classify(gateway).best());
   }
 }
 
@@ -147,7 +150,7 @@ CrossingResults evaluateCrossings(const CrossingData& data, const HmmClassifier&
       r.pairs.emplace_back(std::vector<GatewayClass>{kTable43Pairs[p].first, kTable43Pairs[p].second});
       addHmmClassifications(pairwise[p], test, r.pairs.back());
     }
-    addFusedClassifications(hmm, data.environments[e].testGateways, r.fused);
+    addFusedClassifications(hmm, test, data.environments[e].testLayouts, r.fused);
     if (!is2mCluttered(environments[e])) continue;
     addDecisions(decided, results.hmm2mCluttered);
     addBootstrapGroups(r.gateways, bootstrapGroups);
