@@ -38,16 +38,25 @@ HmmClassifier pairwiseClassifier(const HmmClassifier& all, GatewayClass a, Gatew
   return HmmClassifier(std::move(pair));
 }
 
+// The indices of the test sequences of each clutter layout (one test gateway), layouts ascending;
+// `layoutOf` holds the layout of every sequence of one class.
+std::map<int, std::vector<std::size_t>> sequencesPerLayout(const std::vector<int>& layoutOf) {
+  std::map<int, std::vector<std::size_t>> perLayout;
+  for (std::size_t i = 0; i < layoutOf.size(); ++i) perLayout[layoutOf[i]].push_back(i);
+  return perLayout;
+}
+
 // One fused decision per test gateway: the sequences of a gateway class grouped by their layout.
 void addFusedClassifications(const HmmClassifier& classifier, const ClassSequences& test,
                              const std::map<GatewayClass, std::vector<int>>& layouts, GatewayConfusionMatrix& matrix) {
   const std::vector<GatewayClass>& classes = matrix.classes();
   for (const auto& [truth, sequences] : test) {
     if (truth == GatewayClass::Hallway || std::find(classes.begin(), classes.end(), truth) == classes.end()) continue;
-    std::map<int, std::vector<GatewayObservationSequence>> perGateway;
-    const std::vector<int>& layoutOf = layouts.at(truth);
-    for (std::size_t i = 0; i < sequences.size(); ++i) perGateway[layoutOf.at(i)].push_back(sequences[i]);
-    for (const auto& [layout, gateway] : perGateway) matrix.add(truth, classifier.classify(gateway).best());
+    for (const auto& [layout, indices] : sequencesPerLayout(layouts.at(truth))) {
+      std::vector<GatewayObservationSequence> gateway;
+      for (const std::size_t i : indices) gateway.push_back(sequences.at(i));
+      matrix.add(truth, classifier.classify(gateway).best());
+    }
   }
 }
 
@@ -76,15 +85,11 @@ std::vector<GatewayDecisions> gatewayDecisions(const ClassDecisions& decisions,
   std::vector<GatewayDecisions> gateways;
   for (const auto& [truth, decided] : decisions) {
     if (truth == GatewayClass::Hallway) continue;
-    std::map<int, GatewayDecisions> perLayout;
-    const std::vector<int>& layoutOf = layouts.at(truth);
-    for (std::size_t i = 0; i < decided.size(); ++i) {
-      GatewayDecisions& g =
-          perLayout.try_emplace(layoutOf.at(i), GatewayDecisions{truth, layoutOf.at(i), 0, {}}).first->second;
-      ++g.sequences;
-      if (decided[i] != truth) ++g.wrong[decided[i]];
+    for (const auto& [layout, indices] : sequencesPerLayout(layouts.at(truth))) {
+      GatewayDecisions& g = gateways.emplace_back(GatewayDecisions{truth, layout, indices.size(), {}});
+      for (const std::size_t i : indices)
+        if (decided.at(i) != truth) ++g.wrong[decided.at(i)];
     }
-    for (auto& [layout, g] : perLayout) gateways.push_back(std::move(g));
   }
   return gateways;
 }
