@@ -147,10 +147,11 @@ void printHeader(const Options& options) {
   const NarrowPassageConfig& d = options.setup.detector;
   std::printf("# scans at their TRUE poses (detection is evaluated, not SLAM); detector on 1 of every %zu scans;\n"
               "# D_lr in (%.2f, %.2f) m, D_NP < %.1f m, alpha_NP >= %.0f deg, viewing directions every %.0f deg;\n"
+              "# gateway points bound surfaces >= %.2f m, one a wall end continuing the line >= %.2f m;\n"
               "# a gateway: seen in %zu scans, hypotheses associated within %.2f m\n",
               options.setup.everyScans, minPassageWidthM(d), d.maxDoorWidthM, d.maxDistanceM,
-              d.minApertureRad * 180.0 / M_PI, d.viewingStepRad * 180.0 / M_PI, options.setup.tracker.minSupport,
-              options.setup.tracker.associationDistanceM);
+              d.minApertureRad * 180.0 / M_PI, d.viewingStepRad * 180.0 / M_PI, d.minJambLengthM,
+              d.minWallEndLengthM, options.setup.tracker.minSupport, options.setup.tracker.associationDistanceM);
   std::printf("# GT doors: separator lines of X_gt_segmentation.png with two different rooms beside them (else\n"
               "# no-pair), door-like and a narrowing: at most %.1f m wide and narrower than %.0f %% of the free space\n"
               "# beside them, %.1f m off the line on X.png (else wide), both rooms reachable by the tour (else unrch)\n"
@@ -179,6 +180,10 @@ int main(int argc, char** argv) {
        "run the detector on every n-th scan")
       ("min-support", po::value(&options.setup.tracker.minSupport)->default_value(options.setup.tracker.minSupport),
        "scans before a tracked passage is a gateway")
+      ("min-jamb", po::value(&options.setup.detector.minJambLengthM)->default_value(options.setup.detector.minJambLengthM),
+       "shortest surface a gateway point bounds, m")
+      ("min-wall-end", po::value(&options.setup.detector.minWallEndLengthM)->default_value(options.setup.detector.minWallEndLengthM),
+       "how far a wall end continues the gateway line, m")
       ("match-distance-m", po::value(&options.matchDistanceM)->default_value(options.matchDistanceM),
        "largest midpoint distance of a match")
       ("list-doors", po::bool_switch(&options.listDoors), "print every ground-truth line with its class and match")
