@@ -38,21 +38,27 @@ HmmClassifier pairwiseClassifier(const HmmClassifier& all, GatewayClass a, Gatew
   return HmmClassifier(std::move(pair));
 }
 
-// The indices of the test sequences of each clutter layout (one test gateway), layouts ascending;
-// `layoutOf` holds the layout of every sequence of one class.
-std::map<int, std::vector<std::size_t>> sequencesPerLayout(const std::vector<int>& layoutOf) {
-  std::map<int, std::vector<std::size_t>> perLayout;
-  for (std::size_t i = 0; i < layoutOf.size(); ++i) perLayout[layoutOf[i]].push_back(i);
-  return perLayout;
+// The test gateways of one environment: per gateway class (the counter-class has none), the
+// indices of its test sequences in each clutter layout, layouts ascending.
+using TestGateways = std::map<GatewayClass, std::map<int, std::vector<std::size_t>>>;
+TestGateways testGateways(const std::map<GatewayClass, std::vector<int>>& testLayouts) {
+  TestGateways gateways;
+  for (const auto& [truth, layoutOf] : testLayouts) {
+    if (truth == GatewayClass::Hallway) continue;
+    auto& perLayout = gateways[truth];
+    for (std::size_t i = 0; i < layoutOf.size(); ++i) perLayout[layoutOf[i]].push_back(i);
+  }
+  return gateways;
 }
 
-// One fused decision per test gateway: the sequences of a gateway class grouped by their layout.
-void addFusedClassifications(const HmmClassifier& classifier, const ClassSequences& test,
-                             const std::map<GatewayClass, std::vector<int>>& layouts, GatewayConfusionMatrix& matrix) {
+// One fused decision per test gateway of a class of `matrix`, from all its sequences.
+void addFusedClassifications(const HmmClassifier& classifier, const ClassSequences& test, const TestGateways& gateways,
+                             GatewayConfusionMatrix& matrix) {
   const std::vector<GatewayClass>& classes = matrix.classes();
-  for (const auto& [truth, sequences] : test) {
-    if (truth == GatewayClass::Hallway || std::find(classes.begin(), classes.end(), truth) == classes.end()) continue;
-    for (const auto& [layout, indices] : sequencesPerLayout(layouts.at(truth))) {
+  for (const auto& [truth, perLayout] : gateways) {
+    if (std::find(classes.begin(), classes.end(), truth) == classes.end()) continue;
+    const std::vector<GatewayObservationSequence>& sequences = test.at(truth);
+    for (const auto& [layout, indices] : perLayout) {
       std::vector<GatewayObservationSequence> gateway;
       for (const std::size_t i : indices) gateway.push_back(sequences.at(i));
       matrix.add(truth, classifier.classify(gateway).best());
@@ -79,19 +85,19 @@ void addDecisions(const ClassDecisions& decisions, GatewayConfusionMatrix& matri
     for (const GatewayClass d : decided) matrix.add(truth, d);
 }
 
-// The gateway-class decisions grouped by the test layout their sequence was recorded in.
-std::vector<GatewayDecisions> gatewayDecisions(const ClassDecisions& decisions,
-                                               const std::map<GatewayClass, std::vector<int>>& layouts) {
-  std::vector<GatewayDecisions> gateways;
-  for (const auto& [truth, decided] : decisions) {
-    if (truth == GatewayClass::Hallway) continue;
-    for (const auto& [layout, indices] : sequencesPerLayout(layouts.at(truth))) {
-      GatewayDecisions& g = gateways.emplace_back(GatewayDecisions{truth, layout, indices.size(), {}});
+// The decisions on the sequences of each test gateway.
+std::vector<GatewayDecisions> gatewayDecisions(const ClassDecisions& decisions, const TestGateways& gateways) {
+  std::vector<GatewayDecisions> out;
+  for (const auto& [truth, perLayout] : gateways) {
+    const auto decided = decisions.find(truth);
+    if (decided == decisions.end()) continue;
+    for (const auto& [layout, indices] : perLayout) {
+      GatewayDecisions& g = out.emplace_back(GatewayDecisions{truth, layout, indices.size(), {}});
       for (const std::size_t i : indices)
-        if (decided.at(i) != truth) ++g.wrong[decided.at(i)];
+        if (decided->second.at(i) != truth) ++g.wrong[decided->second.at(i)];
     }
   }
-  return gateways;
+  return out;
 }
 
 // Appends to `groups` one group per gateway class of `gateways`: the tallies of its test gateways.
@@ -143,11 +149,12 @@ CrossingResults evaluateCrossings(const CrossingData& data, const HmmClassifier&
   for (std::size_t e = 0; e < environments.size(); ++e) {
     const ClassSequences& test = data.environments[e].test;
     const ClassDecisions decided = hmmDecisions(hmm, test, hmm.classes());  // once for every multi-class figure
+    const TestGateways gateways = testGateways(data.environments[e].testLayouts);
     EnvironmentResults& r = results.environments.emplace_back(
         EnvironmentResults{.hmm = GatewayConfusionMatrix(hmm.classes()),
                            .pairs = {},
                            .fused = GatewayConfusionMatrix(hmm.classes()),
-                           .gateways = gatewayDecisions(decided, data.environments[e].testLayouts)});
+                           .gateways = gatewayDecisions(decided, gateways)});
     addWeightClassifications(test, r);
     addDecisions(decided, r.hmm);
     addDecisions(decided, results.hmmAll);
@@ -155,7 +162,7 @@ CrossingResults evaluateCrossings(const CrossingData& data, const HmmClassifier&
       r.pairs.emplace_back(std::vector<GatewayClass>{kTable43Pairs[p].first, kTable43Pairs[p].second});
       addHmmClassifications(pairwise[p], test, r.pairs.back());
     }
-    addFusedClassifications(hmm, test, data.environments[e].testLayouts, r.fused);
+    addFusedClassifications(hmm, test, gateways, r.fused);
     if (!is2mCluttered(environments[e])) continue;
     addDecisions(decided, results.hmm2mCluttered);
     addBootstrapGroups(r.gateways, bootstrapGroups);
