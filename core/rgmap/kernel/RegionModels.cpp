@@ -4,6 +4,7 @@
 #include <algorithm>
 
 #include "core/common/Errors.h"
+#include "core/rgmap/kernel/DoorSides.h"
 #include "core/rgmap/kernel/GatewayGeometry.h"
 
 namespace rgnav {
@@ -12,6 +13,18 @@ namespace {
 bool sameSegments(const std::vector<GatewaySegment>& a, const std::vector<GatewaySegment>& b) {
   return std::equal(a.begin(), a.end(), b.begin(), b.end(),
                     [](const GatewaySegment& u, const GatewaySegment& v) { return u.a == v.a && u.b == v.b; });
+}
+
+// Whether `doorInMap`, a door no region is attached to, still separates `region` from another
+// one: `region`'s robot stood on one side of it only, and another region saw it from the other.
+bool separatesFromAnother(const RgMapState& state, const Region& region, const GatewaySegment& doorInMap,
+                          const DoorSideProbe& probe) {
+  const unsigned stood = sidesStoodOn(state, region, doorInMap, probe);
+  if (stood != kLeftSide && stood != kRightSide) return false;
+  const unsigned beyond = kBothSides & ~stood;
+  return std::any_of(state.regions.begin(), state.regions.end(), [&](const auto& entry) {
+    return entry.first != region.id && (sidesSeenFrom(state, entry.second, doorInMap, probe) & beyond) != 0;
+  });
 }
 
 }  // namespace
@@ -27,14 +40,18 @@ std::vector<GatewaySegment> regionGatewaySegments(const RgMapState& state, const
   return out;
 }
 
-std::vector<GatewaySegment> otherDoorLines(const RgMapState& state, const Region& region) {
+std::vector<GatewaySegment> otherDoorLines(const RgMapState& state, const Region& region, const DoorSideProbe& probe) {
   std::vector<GatewaySegment> out;
   for (const auto& [id, gateway] : state.gateways) {
     const bool own = std::any_of(gateway.sides.begin(), gateway.sides.end(),
                                  [&](const GatewaySideRef& side) { return side.region == region.id; });
+    if (!gateway.door() || gateway.neutralised || own) continue;
     const bool attached = std::any_of(gateway.sides.begin(), gateway.sides.end(),
                                       [](const GatewaySideRef& side) { return side.region != 0; });
-    if (!gateway.door() || gateway.neutralised || own || !attached) continue;
+    if (!attached) {
+      const PlacedGateway inMap = placeGateway(gateway);
+      if (!separatesFromAnother(state, region, {inMap.gatewayPoints[0], inMap.gatewayPoints[1]}, probe)) continue;
+    }
     const PlacedGateway placed = placeGateway(gateway, region.frame);
     out.push_back({placed.gatewayPoints[0], placed.gatewayPoints[1]});
   }
@@ -61,6 +78,7 @@ RegionModels::RegionModels(const RegionModelConfig& config) : config_(config) {
   // Both throw for a bad configuration (ConfigError, InvalidArgumentError), before any region needs them.
   if (!(config.doorFrames.depthM >= 0.0) || !(config.doorFrames.widenM >= 0.0))
     throw ConfigError("region models: door frame depth and widening must be >= 0");
+  validate(config.unattachedDoors);
   RegionEvidence{config.evidence};
   RegionLineMap{config.extractor, config.merger};
 }
@@ -71,7 +89,7 @@ RegionModels::Model& RegionModels::upToDate(const RgMapState& state, RegionId id
   const Region& r = region->second;
   const std::vector<GatewaySegment> gateways = regionGatewaySegments(state, r);
   std::vector<GatewaySegment> cutting = gateways;
-  const std::vector<GatewaySegment> others = otherDoorLines(state, r);
+  const std::vector<GatewaySegment> others = otherDoorLines(state, r, config_.unattachedDoors);
   cutting.insert(cutting.end(), others.begin(), others.end());
   const std::vector<GatewaySegment> frames = doorFrameLines(state, r, config_.doorFrames);
   cutting.insert(cutting.end(), frames.begin(), frames.end());

@@ -1,10 +1,11 @@
 // RegionModels: the metric description M and the properties P of each region (thesis 2.1.1,
 // 5.2): its 2D line segment map (RegionLineMap) and its RegionDescription, in the region's own
 // frame, computed from the region's aligned scans and its gateway lines (GatewayGeometry.h), its
-// beams cut at the doors other regions lie at (otherDoorLines) and just beyond its own doors
+// beams cut at the doors between other regions (otherDoorLines) and just beyond its own doors
 // (doorFrameLines).
 // Both are pure functions of the map state (the region's scans in ID order with their corrected
-// poses, its frame, its gateway lines and the map's doors), so they are not part of a checkpoint:
+// poses, its frame, its gateway lines, the map's doors and, for doors no region is attached to,
+// the other regions' scans), so they are not part of a checkpoint:
 // a resumed kernel computes the very same ones. They are computed on demand and cached; a cached
 // model remembers its inputs and is reused when they are unchanged, extended scan by scan when the
 // region only gained scans (the current region while the robot is in it), and rebuilt otherwise
@@ -21,6 +22,7 @@
 #include "core/lines/RegionLineMap.h"
 #include "core/rgmap/describe/RegionDescription.h"
 #include "core/rgmap/describe/RegionEvidence.h"
+#include "core/rgmap/kernel/DoorSides.h"
 #include "core/rgmap/kernel/RgMapState.h"
 
 namespace rgnav {
@@ -37,22 +39,28 @@ struct RegionModelConfig {
   RegionEvidenceConfig evidence;
   DescriptionParams description;
   DoorFrameCut doorFrames;
+  DoorSideProbe unattachedDoors;  // which doors no region is attached to cut (otherDoorLines)
 };
 
 // The gateway lines of `region` in its own frame: every side of its gateways that lies in it,
 // by gateway ID and side.
 std::vector<GatewaySegment> regionGatewaySegments(const RgMapState& state, const Region& region);
 
-// The lines of every door that is not neutralised, not the region's own and has a region on a
-// side, in the region's frame. With the region's own gateway lines they cut its beams (thesis
-// 5.2: "laser beams that cross a gateway are filtered out"; ours: every such door, not only its
-// own): a region also sees through doors between other regions (through an open room into the
-// next one), and what lies behind them is no part of it either. A door no region was ever
-// attached to (neither passed nor observed from near by) is left out: most of them are no doors
-// (gaps between furniture, a partition's end and a far corner), and cutting at them took the
-// floor behind them from every region (rgnav-eval-rooms, ten maps: recall mean 0.789 -> 0.829,
-// precision mean 0.879 -> 0.862; open cubicles of lab_a 0.655 -> 0.875).
-std::vector<GatewaySegment> otherDoorLines(const RgMapState& state, const Region& region);
+// The lines of every door that is not neutralised and not the region's own, and has a region on a
+// side or separates the region from another one (DoorSides.h), in the region's frame. With the
+// region's own gateway lines they cut its beams (thesis 5.2: "laser beams that cross a gateway are
+// filtered out"; ours: every such door, not only its own): a region also sees through doors
+// between other regions (through an open room into the next one), and what lies behind them is no
+// part of it either.
+// A door no region was ever attached to (neither passed nor observed from near by) cuts only where
+// the region's robot stood on one side of it and another region saw it from the other: most such
+// doors are no doors (gaps between furniture, a partition's end and a far corner), and cutting at
+// all of them took the floor behind them from every region (rgnav-eval-rooms, ten maps: recall
+// mean 0.829 without them, 0.789 with all; open cubicles of lab_a 0.875 and 0.655); a real door
+// between two rooms the robot entered from the hallway is one of them (Freiburg52: each room's
+// region saw half the other room through it).
+std::vector<GatewaySegment> otherDoorLines(const RgMapState& state, const Region& region,
+                                          const DoorSideProbe& probe = {});
 
 // The region's own doors (not neutralised) moved cut.depthM to their other side and lengthened by
 // cut.widenM at both ends, in the region's frame (ours). The robot that stands in a door frame,
@@ -62,8 +70,8 @@ std::vector<GatewaySegment> doorFrameLines(const RgMapState& state, const Region
 
 class RegionModels {
  public:
-  // Throws ConfigError for a negative door frame depth or widening (and as RegionEvidence and
-  // RegionLineMap do for theirs).
+  // Throws ConfigError for a negative door frame depth or widening, a bad DoorSideProbe (and as
+  // RegionEvidence and RegionLineMap do for theirs).
   explicit RegionModels(const RegionModelConfig& config = {});
 
   // The line map / description of region `id` of `state`. Throws NotAvailableError for an unknown

@@ -4,8 +4,8 @@
 // were taken in, a turn joining regions once two sequences support it and merging them again when
 // it turns out to be a hallway, a revisited room updated and not duplicated, region descriptions,
 // naming, merging on request, a path through the RG Graph, revised SLAM poses, bad inputs
-// refused; beams cut at every door with a region on a side and just beyond the region's own
-// doors, no robot side beside a door's ends.
+// refused; beams cut at every door with a region on a side or between two regions, and just
+// beyond the region's own doors, no robot side beside a door's ends.
 #include "core/rgmap/kernel/RgMappingKernel.h"
 
 #include <cppunit/extensions/HelperMacros.h>
@@ -258,11 +258,29 @@ class RgMappingKernelTest : public CppUnit::TestFixture {
     CPPUNIT_ASSERT(others[0].a == door2.gatewayPoints[0] && others[0].b == door2.gatewayPoints[1]);
     // The hallway has both doors as its own gateway lines: nothing more.
     CPPUNIT_ASSERT(otherDoorLines(s, s.regions.at(kHallway)).empty());
-    // A door no region was attached to cuts nothing.
+    // A door no region was attached to cuts only between two regions: the hallway's robot stood
+    // south of door 2 only and room 2 saw it from the north (and the other way round). Room 1's
+    // robot never stood in front of it.
     RgMapState unattached = s;
     unattached.gateways.at(kDoor2).sides[kSideA].region = 0;
     unattached.gateways.at(kDoor2).sides[kSideB].region = 0;
     CPPUNIT_ASSERT(otherDoorLines(unattached, room1).empty());
+    const Region& hallway = unattached.regions.at(kHallway);
+    const std::vector<GatewaySegment> cutHallway = otherDoorLines(unattached, hallway);
+    CPPUNIT_ASSERT_EQUAL(std::size_t(1), cutHallway.size());
+    const PlacedGateway door2InHallway = placeGateway(s.gateways.at(kDoor2), hallway.frame);
+    CPPUNIT_ASSERT(cutHallway[0].a == door2InHallway.gatewayPoints[0] && cutHallway[0].b == door2InHallway.gatewayPoints[1]);
+    CPPUNIT_ASSERT_EQUAL(std::size_t(2), otherDoorLines(unattached, unattached.regions.at(kRoom2)).size());  // and door 1
+    // Nobody saw it from the north: it cuts nothing.
+    RgMapState unseen = unattached;
+    unseen.regions.at(kRoom2).scans.clear();
+    CPPUNIT_ASSERT(otherDoorLines(unseen, unseen.regions.at(kHallway)).empty());
+    // The hallway's robot stood on both sides of it: the door is inside the hallway's region.
+    RgMapState bothSides = unattached;
+    std::vector<DataId>& hallwayScans = bothSides.regions.at(kHallway).scans;
+    const std::vector<DataId>& room2Scans = bothSides.regions.at(kRoom2).scans;
+    hallwayScans.insert(hallwayScans.end(), room2Scans.begin(), room2Scans.end());
+    CPPUNIT_ASSERT(otherDoorLines(bothSides, bothSides.regions.at(kHallway)).empty());
   }
 
   void beamsAreCutJustBeyondOwnDoors() {
