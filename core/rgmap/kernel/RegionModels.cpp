@@ -58,26 +58,46 @@ std::vector<GatewaySegment> otherDoorLines(const RgMapState& state, const Region
   return out;
 }
 
-std::vector<GatewaySegment> doorFrameLines(const RgMapState& state, const Region& region, const DoorFrameCut& cut) {
-  std::vector<GatewaySegment> out;
+std::vector<OwnDoor> ownDoors(const RgMapState& state, const Region& region) {
+  std::vector<OwnDoor> out;
   for (GatewayId id : region.gateways) {
     const Gateway& g = state.gateways.at(id);
     if (!g.door() || g.neutralised) continue;
     const std::size_t own = g.sides[kSideA].region == region.id ? kSideA : kSideB;
     const PlacedGateway placed = placeGateway(g, region.frame);
-    const Eigen::Vector2d away =
-        (placed.crossingPoints[g.sides[1 - own].crossing] - placed.crossingPoints[g.sides[own].crossing]).normalized();
-    const Eigen::Vector2d along = (placed.gatewayPoints[1] - placed.gatewayPoints[0]).normalized();
-    const Eigen::Vector2d beyond = cut.depthM * away;
-    out.push_back({placed.gatewayPoints[0] + beyond - cut.widenM * along, placed.gatewayPoints[1] + beyond + cut.widenM * along});
+    out.push_back({{placed.gatewayPoints[0], placed.gatewayPoints[1]},
+                   (placed.crossingPoints[g.sides[1 - own].crossing] - placed.crossingPoints[g.sides[own].crossing])
+                       .normalized()});
   }
   return out;
+}
+
+std::vector<GatewaySegment> doorFrameLines(std::span<const OwnDoor> doors, const DoorFrameCut& cut) {
+  std::vector<GatewaySegment> out;
+  for (const OwnDoor& door : doors) {
+    const Eigen::Vector2d along = (door.line.b - door.line.a).normalized();
+    const Eigen::Vector2d beyond = cut.depthM * door.away;
+    out.push_back({door.line.a + beyond - cut.widenM * along, door.line.b + beyond + cut.widenM * along});
+  }
+  return out;
+}
+
+bool pastOwnDoor(std::span<const OwnDoor> doors, const Eigen::Vector2d& sensor, const PastOwnDoor& limits) {
+  return std::any_of(doors.begin(), doors.end(), [&](const OwnDoor& door) {
+    const double length = (door.line.b - door.line.a).norm();
+    const Eigen::Vector2d along = (door.line.b - door.line.a) / length;
+    const Eigen::Vector2d offset = sensor - 0.5 * (door.line.a + door.line.b);
+    const double past = offset.dot(door.away);
+    return past > 0.0 && past <= limits.depthM && std::abs(offset.dot(along)) <= 0.5 * length + limits.besideM;
+  });
 }
 
 RegionModels::RegionModels(const RegionModelConfig& config) : config_(config) {
   // Both throw for a bad configuration (ConfigError, InvalidArgumentError), before any region needs them.
   if (!(config.doorFrames.depthM >= 0.0) || !(config.doorFrames.widenM >= 0.0))
     throw ConfigError("region models: door frame depth and widening must be >= 0");
+  if (!(config.pastOwnDoors.depthM >= 0.0) || !(config.pastOwnDoors.besideM >= 0.0))
+    throw ConfigError("region models: the depth and the margin past own doors must be >= 0");
   validate(config.unattachedDoors);
   RegionEvidence{config.evidence};
   RegionLineMap{config.extractor, config.merger};
@@ -91,13 +111,14 @@ RegionModels::Model& RegionModels::upToDate(const RgMapState& state, RegionId id
   std::vector<GatewaySegment> cutting = gateways;
   const std::vector<GatewaySegment> others = otherDoorLines(state, r, config_.unattachedDoors);
   cutting.insert(cutting.end(), others.begin(), others.end());
-  const std::vector<GatewaySegment> frames = doorFrameLines(state, r, config_.doorFrames);
+  const std::vector<OwnDoor> doors = ownDoors(state, r);
+  const std::vector<GatewaySegment> frames = doorFrameLines(doors, config_.doorFrames);
   cutting.insert(cutting.end(), frames.begin(), frames.end());
 
   auto it = models_.find(id);
   const auto keyAt = [&](std::size_t i) { return ScanKey{r.scans[i], state.scans.at(r.scans[i]).corrected}; };
   bool reusable = it != models_.end() && it->second.frame == r.frame && sameSegments(it->second.gateways, gateways) &&
-                  sameSegments(it->second.cutting, cutting) &&
+                  sameSegments(it->second.cutting, cutting) && it->second.doors == doors &&
                   it->second.scans.size() <= r.scans.size();
   for (std::size_t i = 0; reusable && i < it->second.scans.size(); ++i) reusable = it->second.scans[i] == keyAt(i);
   if (!reusable) {
@@ -106,6 +127,7 @@ RegionModels::Model& RegionModels::upToDate(const RgMapState& state, RegionId id
              .emplace(id, Model{r.frame,
                                 gateways,
                                 cutting,
+                                doors,
                                 {},
                                 RegionLineMap(config_.extractor, config_.merger),
                                 RegionEvidence(config_.evidence),
@@ -118,7 +140,8 @@ RegionModels::Model& RegionModels::upToDate(const RgMapState& state, RegionId id
       const ScanKey key = keyAt(i);
       const Pose2D inRegion = between(r.frame, key.corrected);
       const LaserScan& scan = state.scans.at(key.id).scan;
-      m.evidence.addScan(scan, inRegion, m.cutting);  // the only step that can reject the scan
+      if (!pastOwnDoor(m.doors, {inRegion.x, inRegion.y}, config_.pastOwnDoors))
+        m.evidence.addScan(scan, inRegion, m.cutting);  // the only step that can reject the scan
       m.lines.addScan(scan, inRegion);
       m.scans.push_back(key);
       m.description.reset();

@@ -17,6 +17,7 @@
 
 #include <map>
 #include <optional>
+#include <span>
 #include <vector>
 
 #include "core/lines/RegionLineMap.h"
@@ -33,12 +34,19 @@ struct DoorFrameCut {
   double widenM = 1.0;   // longer than the door at each end
 };
 
+// Which scans of a region stay out of its freespace evidence (pastOwnDoor).
+struct PastOwnDoor {
+  double depthM = 1.0;   // up to this far beyond the line of one of its own doors ...
+  double besideM = 0.5;  // ... and at most this far beside the door's ends
+};
+
 struct RegionModelConfig {
   LineExtractorParams extractor;
   LineMergerParams merger;
   RegionEvidenceConfig evidence;
   DescriptionParams description;
   DoorFrameCut doorFrames;
+  PastOwnDoor pastOwnDoors;
   DoorSideProbe unattachedDoors;  // which doors no region is attached to cut (otherDoorLines)
 };
 
@@ -62,11 +70,29 @@ std::vector<GatewaySegment> regionGatewaySegments(const RgMapState& state, const
 std::vector<GatewaySegment> otherDoorLines(const RgMapState& state, const Region& region,
                                           const DoorSideProbe& probe = {});
 
-// The region's own doors (not neutralised) moved cut.depthM to their other side and lengthened by
-// cut.widenM at both ends, in the region's frame (ours). The robot that stands in a door frame,
-// just beyond the door's line, before the traversal, sees past that line into the next room,
-// through the door and at a slant; these lines stop its beams soon after the door.
-std::vector<GatewaySegment> doorFrameLines(const RgMapState& state, const Region& region, const DoorFrameCut& cut);
+// One of the region's own doors (not neutralised) in the region's frame, with the direction from
+// its crossing point in the region to the one beyond.
+struct OwnDoor {
+  GatewaySegment line;
+  Eigen::Vector2d away = Eigen::Vector2d::Zero();
+  friend bool operator==(const OwnDoor& a, const OwnDoor& b) {
+    return a.line.a == b.line.a && a.line.b == b.line.b && a.away == b.away;
+  }
+};
+std::vector<OwnDoor> ownDoors(const RgMapState& state, const Region& region);
+
+// The region's own doors moved cut.depthM to their other side and lengthened by cut.widenM at both
+// ends, in the region's frame (ours). The robot that stands in a door frame, just in front of the
+// door's line, before the traversal, sees past that line into the next room, through the door and
+// at a slant; these lines stop its beams soon after the door.
+std::vector<GatewaySegment> doorFrameLines(std::span<const OwnDoor> doors, const DoorFrameCut& cut);
+
+// Whether `sensor` (region frame) lies beyond one of the region's own `doors`: past its line by at
+// most limits.depthM, beside its ends by at most limits.besideM (ours). A scan taken there looks into
+// the next room: the robot has passed the door, but the traversal has not reached the kernel yet,
+// or it turned back in the doorway. Its beams stay out of the region's freespace evidence (office_c:
+// the robot in the doorway claimed half the next room for the room it came from).
+bool pastOwnDoor(std::span<const OwnDoor> doors, const Eigen::Vector2d& sensor, const PastOwnDoor& limits);
 
 class RegionModels {
  public:
@@ -93,6 +119,7 @@ class RegionModels {
     Pose2D frame;
     std::vector<GatewaySegment> gateways;  // its own gateway lines
     std::vector<GatewaySegment> cutting;   // `gateways`, otherDoorLines, doorFrameLines: what cuts its beams
+    std::vector<OwnDoor> doors;            // its own doors: scans past them leave out its evidence
     std::vector<ScanKey> scans;  // the scans in `lines` and `evidence`, in order
     RegionLineMap lines;
     RegionEvidence evidence;

@@ -81,6 +81,7 @@ class RgMappingKernelTest : public CppUnit::TestFixture {
   CPPUNIT_TEST(descriptionsStayInsideTheirRooms);
   CPPUNIT_TEST(beamsAreCutAtEveryDoor);
   CPPUNIT_TEST(beamsAreCutJustBeyondOwnDoors);
+  CPPUNIT_TEST(scansPastOwnDoorsLeaveTheEvidence);
   CPPUNIT_TEST(noSideBesideAPassagesEnds);
   CPPUNIT_TEST(preliminaryDescriptionGrowsWithTheScans);
   CPPUNIT_TEST(hallwayTurnJoinsTwoRegions);
@@ -289,19 +290,60 @@ class RgMappingKernelTest : public CppUnit::TestFixture {
     const Region& room1 = s.regions.at(kRoom1);
     // Door 1, (3.55, 2)-(4.45, 2) in the map frame, moved 0.3 m into the hallway and 1 m longer
     // at each end.
-    const std::vector<GatewaySegment> lines = doorFrameLines(s, room1, DoorFrameCut{0.3, 1.0});
+    const std::vector<GatewaySegment> lines = doorFrameLines(ownDoors(s, room1), DoorFrameCut{0.3, 1.0});
     CPPUNIT_ASSERT_EQUAL(std::size_t(1), lines.size());
     const Eigen::Vector2d a = transformPoint(room1.frame, lines[0].a), b = transformPoint(room1.frame, lines[0].b);
     const Eigen::Vector2d west = a.x() < b.x() ? a : b, east = a.x() < b.x() ? b : a;
     CPPUNIT_ASSERT((west - Eigen::Vector2d(2.55, 1.7)).norm() < 0.05);
     CPPUNIT_ASSERT((east - Eigen::Vector2d(5.45, 1.7)).norm() < 0.05);
     // The hallway's lines lie in the rooms; a room seen through its door from the hallway ends there.
-    for (const GatewaySegment& line : doorFrameLines(s, s.regions.at(kHallway), DoorFrameCut{0.3, 1.0}))
+    for (const GatewaySegment& line : doorFrameLines(ownDoors(s, s.regions.at(kHallway)), DoorFrameCut{0.3, 1.0}))
       CPPUNIT_ASSERT_DOUBLES_EQUAL(2.3, transformPoint(s.regions.at(kHallway).frame, line.a).y(), 0.05);
     // A neutralised door cuts nothing.
     RgMapState merged = s;
     mergeRegions(merged, kHallway, kRoom1, s.lastScanId);
-    CPPUNIT_ASSERT_EQUAL(std::size_t(1), doorFrameLines(merged, merged.regions.at(kHallway), DoorFrameCut{}).size());
+    CPPUNIT_ASSERT_EQUAL(std::size_t(1), doorFrameLines(ownDoors(merged, merged.regions.at(kHallway)), DoorFrameCut{}).size());
+  }
+
+  void scansPastOwnDoorsLeaveTheEvidence() {
+    const RgMappingKernel k = mappedFloor();
+    const RgMapState& s = k.state();
+    const Region& room1 = s.regions.at(kRoom1);
+    const std::vector<OwnDoor> doors = ownDoors(s, room1);  // door 1, (3.55, 2)-(4.45, 2), the hallway below
+    const auto past = [&](double x, double y) {
+      const Pose2D inRoom = between(room1.frame, Pose2D{x, y, 0.0});
+      return pastOwnDoor(doors, {inRoom.x, inRoom.y}, PastOwnDoor{1.0, 0.5});
+    };
+    CPPUNIT_ASSERT(past(4.0, 1.5));
+    CPPUNIT_ASSERT(past(4.9, 1.1));
+    CPPUNIT_ASSERT(!past(4.0, 2.5));  // in the room
+    CPPUNIT_ASSERT(!past(4.0, 0.8));  // deeper in the hallway
+    CPPUNIT_ASSERT(!past(5.3, 1.5));  // beside the door
+    // A hallway scan in the doorway that reached room 1 (a traversal reported late) adds nothing
+    // to room 1's description: no scan, no freespace.
+    const std::vector<DataId>& hallwayScans = s.regions.at(kHallway).scans;
+    const auto doorway = std::find_if(hallwayScans.begin(), hallwayScans.end(), [&](DataId id) {
+      const Pose2D& p = s.scans.at(id).corrected;
+      return past(p.x, p.y);
+    });
+    CPPUNIT_ASSERT(doorway != hallwayScans.end());
+    RgMapState late = s;
+    std::vector<DataId>& lateScans = late.regions.at(kRoom1).scans;
+    lateScans.insert(std::upper_bound(lateScans.begin(), lateScans.end(), *doorway), *doorway);
+    RegionModels models;
+    const RegionDescription& before = models.description(s, kRoom1);
+    const std::size_t scanCount = before.scanCount;
+    const std::size_t freeBytes = before.freespaceBytes();
+    const RegionDescription& after = models.description(late, kRoom1);
+    CPPUNIT_ASSERT_EQUAL(scanCount, after.scanCount);
+    CPPUNIT_ASSERT_EQUAL(freeBytes, after.freespaceBytes());
+    // Counted as a room scan, it would have added itself and the hallway it saw.
+    RegionModelConfig counted;
+    counted.pastOwnDoors.depthM = 0.0;
+    RegionModels countingModels(counted);
+    const RegionDescription& seen = countingModels.description(late, kRoom1);
+    CPPUNIT_ASSERT_EQUAL(scanCount + 1, seen.scanCount);
+    CPPUNIT_ASSERT(seen.freespaceBytes() > freeBytes);
   }
 
   void noSideBesideAPassagesEnds() {
