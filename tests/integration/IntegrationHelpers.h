@@ -1,6 +1,6 @@
 // Helpers shared by the integration tests: the playback module's command line, predicates on
 // the watchdog's view of a module, the watchdog's event log, reading a whole scan stream,
-// whether a process is gone, and a scratch directory. Every wait is bounded.
+// whether a process is gone, and a scratch directory. Every wait is bounded (Wait.h: waitUntil).
 #pragma once
 
 #include <sys/types.h>
@@ -18,6 +18,7 @@
 #include "clientlibs/laser/LaserClient.h"
 #include "tests/support/cluster/TestCluster.h"
 #include "watchdog/ProcStat.h"
+#include "watchdog/testing/Wait.h"
 
 namespace rgnav::testing {
 
@@ -53,16 +54,18 @@ inline std::vector<SupervisionEvent> eventsOf(WatchdogClient& watchdog, const st
   return out;
 }
 
-// Polls until the event exists; throws std::runtime_error after `limit`.
+// Polls until the event exists; fails the test after `limit`.
 inline SupervisionEvent waitForEvent(WatchdogClient& watchdog, const std::string& module, const std::string& what,
                                      std::chrono::milliseconds limit = std::chrono::seconds(20)) {
-  const auto giveUp = std::chrono::steady_clock::now() + limit;
-  for (;;) {
-    if (const auto found = eventsOf(watchdog, module, what); !found.empty()) return found.front();
-    if (std::chrono::steady_clock::now() > giveUp)
-      throw std::runtime_error("no '" + what + "' event of " + module + " within the limit");
-    std::this_thread::sleep_for(std::chrono::milliseconds(20));
-  }
+  std::optional<SupervisionEvent> found;
+  waitUntil(
+      [&] {
+        const std::vector<SupervisionEvent> events = eventsOf(watchdog, module, what);
+        if (!events.empty()) found = events.front();
+        return found.has_value();
+      },
+      "a '" + what + "' event of " + module, limit, std::chrono::milliseconds(20));
+  return *found;
 }
 
 // Reads every scan after `after` until the server reports the end of data; bounded in calls.

@@ -21,7 +21,6 @@
 using namespace rgnav;
 using namespace rgnav::testing;
 namespace fs = std::filesystem;
-using Clock = std::chrono::steady_clock;
 
 namespace {
 
@@ -72,31 +71,26 @@ class InterruptedRunIntegrationTest : public CppUnit::TestFixture {
 
     // Wait for the set to run: its ScanMapper module names the cluster directory.
     std::optional<fs::path> cluster;
-    const auto giveUp = Clock::now() + std::chrono::seconds(120);
-    while (!(cluster = clusterDirIn(scratch.path)) || processesNaming(cluster->string() + "/").size() < 2) {
-      CPPUNIT_ASSERT_MESSAGE("the server set did not start", Clock::now() < giveUp);
-      CPPUNIT_ASSERT_EQUAL_MESSAGE("the program ended early", 0, ::waitpid(child.pid, nullptr, WNOHANG));
-      std::this_thread::sleep_for(std::chrono::milliseconds(50));
-    }
+    waitUntil(
+        [&] {
+          CPPUNIT_ASSERT_EQUAL_MESSAGE("the program ended early", 0, ::waitpid(child.pid, nullptr, WNOHANG));
+          cluster = clusterDirIn(scratch.path);
+          return cluster && processesNaming(cluster->string() + "/").size() >= 2;
+        },
+        "the server set to start", std::chrono::seconds(120), std::chrono::milliseconds(50));
     std::this_thread::sleep_for(std::chrono::seconds(1));
 
     CPPUNIT_ASSERT_EQUAL(0, ::kill(child.pid, SIGINT));
     int status = 0;
-    const auto stopLimit = Clock::now() + std::chrono::seconds(60);
-    while (::waitpid(child.pid, &status, WNOHANG) == 0) {
-      CPPUNIT_ASSERT_MESSAGE("the program did not end after SIGINT", Clock::now() < stopLimit);
-      std::this_thread::sleep_for(std::chrono::milliseconds(50));
-    }
+    waitUntil([&] { return ::waitpid(child.pid, &status, WNOHANG) != 0; }, "the program to end after SIGINT",
+              std::chrono::seconds(60), std::chrono::milliseconds(50));
     child.pid = -1;
     CPPUNIT_ASSERT_MESSAGE("ended by a signal, not by unwinding", WIFEXITED(status));
     CPPUNIT_ASSERT_EQUAL(2, WEXITSTATUS(status));
     CPPUNIT_ASSERT_MESSAGE("the cluster directory is left", !fs::exists(*cluster));
     // The set's processes got SIGKILL at the latest; give the kernel time to remove them.
-    const auto goneLimit = Clock::now() + std::chrono::seconds(10);
-    while (!processesNaming(cluster->string() + "/").empty()) {
-      CPPUNIT_ASSERT_MESSAGE("a process of the set is left", Clock::now() < goneLimit);
-      std::this_thread::sleep_for(std::chrono::milliseconds(50));
-    }
+    waitUntil([&] { return processesNaming(cluster->string() + "/").empty(); }, "every process of the set to end",
+              std::chrono::seconds(10), std::chrono::milliseconds(50));
   }
 };
 

@@ -10,7 +10,6 @@
 #include <filesystem>
 #include <map>
 #include <set>
-#include <thread>
 
 #include "clientlibs/rgmappingkernel/RgMappingKernelClient.h"
 #include "tests/integration/IntegrationHelpers.h"
@@ -35,12 +34,14 @@ std::vector<ClusterModule> mappingSet(const std::string& log) {
 }
 
 MapSummaryView waitForEnd(RgMappingKernelClient& kernel) {
-  for (int i = 0; i < 6000; ++i) {
-    const MapSummaryView s = kernel.summary();
-    if (s.endOfData) return s;
-    std::this_thread::sleep_for(std::chrono::milliseconds(50));
-  }
-  throw std::runtime_error("the map was not finished within 5 minutes");
+  MapSummaryView summary;
+  waitUntil(
+      [&] {
+        summary = kernel.summary();
+        return summary.endOfData;
+      },
+      "the map to be finished", std::chrono::minutes(5), std::chrono::milliseconds(50));
+  return summary;
 }
 
 // Every structural invariant of the issue, checked on what the module serves.

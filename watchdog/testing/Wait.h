@@ -17,11 +17,15 @@ namespace rgnav::testing {
 
 constexpr std::chrono::seconds kWaitLimit{20};
 
-inline void waitUntil(const std::function<bool()>& condition, const std::string& what) {
-  const auto giveUp = std::chrono::steady_clock::now() + kWaitLimit;
+// Polls `condition` every `period` until it holds; fails the test after `limit`. The condition
+// may fail the test itself (a CppUnit assertion) to stop early.
+inline void waitUntil(const std::function<bool()>& condition, const std::string& what,
+                      std::chrono::milliseconds limit = kWaitLimit,
+                      std::chrono::milliseconds period = std::chrono::milliseconds(5)) {
+  const auto giveUp = std::chrono::steady_clock::now() + limit;
   while (!condition()) {
     if (std::chrono::steady_clock::now() > giveUp) CPPUNIT_FAIL("timed out waiting for " + what);
-    std::this_thread::sleep_for(std::chrono::milliseconds(5));
+    std::this_thread::sleep_for(period);
   }
 }
 
