@@ -51,7 +51,7 @@ struct RegionDescription {
   LineMapAccuracy accuracy;
   FreespaceCompleteness completeness;
   std::vector<Rectangle2D> objects;  // region frame, most confident first
-  std::size_t scanCount = 0;
+  std::size_t scanCount = 0;  // scans in the evidence it was made from
 
   std::size_t freespaceBytes() const { return freespace.bytes.size(); }
 };

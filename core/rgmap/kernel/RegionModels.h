@@ -2,7 +2,7 @@
 // 5.2): its 2D line segment map (RegionLineMap) and its RegionDescription, in the region's own
 // frame, computed from the region's aligned scans and its gateway lines (GatewayGeometry.h), its
 // beams cut at the doors between other regions (otherDoorLines) and just beyond its own doors
-// (doorFrameLines).
+// (doorFrameLines); scans taken just past its own doors add nothing to its evidence (pastOwnDoor).
 // Both are pure functions of the map state (the region's scans in ID order with their corrected
 // poses, its frame, its gateway lines, the map's doors and, for doors no region is attached to,
 // the other regions' scans), so they are not part of a checkpoint:
@@ -96,8 +96,8 @@ bool pastOwnDoor(std::span<const OwnDoor> doors, const Eigen::Vector2d& sensor, 
 
 class RegionModels {
  public:
-  // Throws ConfigError for a negative door frame depth or widening, a bad DoorSideProbe (and as
-  // RegionEvidence and RegionLineMap do for theirs).
+  // Throws ConfigError for a negative door frame depth or widening, a negative PastOwnDoor
+  // distance, a bad DoorSideProbe (and as RegionEvidence and RegionLineMap do for theirs).
   explicit RegionModels(const RegionModelConfig& config = {});
 
   // The line map / description of region `id` of `state`. Throws NotAvailableError for an unknown

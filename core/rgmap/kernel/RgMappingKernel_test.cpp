@@ -11,6 +11,7 @@
 #include <cppunit/extensions/HelperMacros.h>
 
 #include <algorithm>
+#include <cmath>
 
 #include "core/common/Errors.h"
 #include "core/lines/ScanPoints.h"
@@ -487,6 +488,12 @@ class RgMappingKernelTest : public CppUnit::TestFixture {
     RgMappingKernelConfig badFrames;
     badFrames.models.doorFrames.depthM = -0.1;
     CPPUNIT_ASSERT_THROW(RgMappingKernel{badFrames}, ConfigError);
+    RgMappingKernelConfig badPast;
+    badPast.models.pastOwnDoors.besideM = NAN;
+    CPPUNIT_ASSERT_THROW(RgMappingKernel{badPast}, ConfigError);
+    RgMappingKernelConfig badProbe;
+    badProbe.models.unattachedDoors.depthM = -1.0;
+    CPPUNIT_ASSERT_THROW(RgMappingKernel{badProbe}, ConfigError);
     RgMappingKernelConfig badDoorMatch;
     badDoorMatch.sameDoorM = -1.0;
     CPPUNIT_ASSERT_THROW(RgMappingKernel{badDoorMatch}, ConfigError);
