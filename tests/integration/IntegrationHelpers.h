@@ -9,10 +9,8 @@
 #include <chrono>
 #include <cstdint>
 #include <filesystem>
-#include <optional>
 #include <stdexcept>
 #include <string>
-#include <thread>
 #include <vector>
 
 #include "clientlibs/laser/LaserClient.h"
@@ -57,15 +55,14 @@ inline std::vector<SupervisionEvent> eventsOf(WatchdogClient& watchdog, const st
 // Polls until the event exists; fails the test after `limit`.
 inline SupervisionEvent waitForEvent(WatchdogClient& watchdog, const std::string& module, const std::string& what,
                                      std::chrono::milliseconds limit = std::chrono::seconds(20)) {
-  std::optional<SupervisionEvent> found;
+  std::vector<SupervisionEvent> found;
   waitUntil(
       [&] {
-        const std::vector<SupervisionEvent> events = eventsOf(watchdog, module, what);
-        if (!events.empty()) found = events.front();
-        return found.has_value();
+        found = eventsOf(watchdog, module, what);
+        return !found.empty();
       },
       "a '" + what + "' event of " + module, limit, std::chrono::milliseconds(20));
-  return *found;
+  return found.front();
 }
 
 // Reads every scan after `after` until the server reports the end of data; bounded in calls.

@@ -36,7 +36,8 @@ unsigned collectSides(const RgMapState& state, const Region& region, const Gatew
 }
 
 // Whether the beam of `stored` towards `target` (or a neighbour of it) reaches it.
-bool seesPoint(const StoredScan& stored, const Eigen::Vector2d& target, const DoorSideProbe& probe) {
+bool seesPoint(const StoredScan& stored, const Eigen::Vector2d& target, const DoorSideProbe& probe,
+               double noReturnFreeRangeM) {
   const LaserScan& scan = stored.scan;
   if (!(std::abs(scan.angleIncrement) > 0.0)) return false;
   const Eigen::Vector2d toTarget = target - Eigen::Vector2d(stored.corrected.x, stored.corrected.y);
@@ -46,7 +47,7 @@ bool seesPoint(const StoredScan& stored, const Eigen::Vector2d& target, const Do
   if (relative / scan.angleIncrement < -0.5) relative += std::copysign(2.0 * std::numbers::pi, scan.angleIncrement);
   const long beam = std::lround(relative / scan.angleIncrement);
   const bool hasMaxRange = scan.maxRange > 0.0;
-  const double noReturnSeen = hasMaxRange ? std::min(probe.noReturnSeenM, scan.maxRange) : probe.noReturnSeenM;
+  const double noReturnSeen = hasMaxRange ? std::min(noReturnFreeRangeM, scan.maxRange) : noReturnFreeRangeM;
   for (long k = beam - 1; k <= beam + 1; ++k) {
     if (k < 0 || k >= long(scan.ranges.size())) continue;
     const float range = scan.ranges[std::size_t(k)];
@@ -60,11 +61,10 @@ bool seesPoint(const StoredScan& stored, const Eigen::Vector2d& target, const Do
 }  // namespace
 
 void validate(const DoorSideProbe& probe) {
-  const std::array<std::pair<double, const char*>, 5> distances{{{probe.depthM, "depthM"},
+  const std::array<std::pair<double, const char*>, 4> distances{{{probe.depthM, "depthM"},
                                                                  {probe.widenM, "widenM"},
                                                                  {probe.besideLineM, "besideLineM"},
-                                                                 {probe.rangeToleranceM, "rangeToleranceM"},
-                                                                 {probe.noReturnSeenM, "noReturnSeenM"}}};
+                                                                 {probe.rangeToleranceM, "rangeToleranceM"}}};
   for (const auto& [value, name] : distances)
     if (!std::isfinite(value) || value < 0.0)
       throw ConfigError(std::string("door sides: ") + name + " must be finite and >= 0");
@@ -76,10 +76,11 @@ unsigned sidesStoodOn(const RgMapState& state, const Region& region, const Gatew
 }
 
 unsigned sidesSeenFrom(const RgMapState& state, const Region& region, const GatewaySegment& door,
-                       const DoorSideProbe& probe) {
+                       const DoorSideProbe& probe, double noReturnFreeRangeM) {
   const Eigen::Vector2d midpoint = 0.5 * (door.a + door.b);
-  return collectSides(state, region, door, probe,
-                      [&](const StoredScan& stored) { return seesPoint(stored, midpoint, probe); });
+  return collectSides(state, region, door, probe, [&](const StoredScan& stored) {
+    return seesPoint(stored, midpoint, probe, noReturnFreeRangeM);
+  });
 }
 
 }  // namespace rgnav

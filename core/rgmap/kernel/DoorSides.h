@@ -7,7 +7,8 @@
 // between its ends lengthened by widenM, and at least besideLineM off the line (on no side while
 // on it). It saw the door if the beam towards the door's midpoint (or one of its two neighbours)
 // ends no more than rangeToleranceM before the midpoint, or gives no return and the midpoint lies
-// within noReturnSeenM (what RegionFreespace counts as free for such a beam).
+// within the range that the freespace counts as free for such a beam (noReturnFreeRangeM, capped
+// at the scan's maximum range as in regionBeams).
 #pragma once
 
 #include "core/rgmap/describe/GatewaySegment.h"
@@ -20,7 +21,6 @@ struct DoorSideProbe {
   double widenM = 1.0;
   double besideLineM = 0.2;
   double rangeToleranceM = 0.15;
-  double noReturnSeenM = 3.0;      // FreespaceConfig::noReturnFreeRangeM
 };
 
 // Throws ConfigError for a negative or non-finite distance.
@@ -32,8 +32,9 @@ enum DoorSides : unsigned { kNoSide = 0, kLeftSide = 1, kRightSide = 2, kBothSid
 // The sides of `door` on which some scan of `region` stood in front of it.
 unsigned sidesStoodOn(const RgMapState& state, const Region& region, const GatewaySegment& door,
                       const DoorSideProbe& probe);
-// The sides of `door` from which some scan of `region` in front of it saw its midpoint.
+// The sides of `door` from which some scan of `region` in front of it saw its midpoint;
+// `noReturnFreeRangeM` as the region freespace's (FreespaceConfig).
 unsigned sidesSeenFrom(const RgMapState& state, const Region& region, const GatewaySegment& door,
-                       const DoorSideProbe& probe);
+                       const DoorSideProbe& probe, double noReturnFreeRangeM);
 
 }  // namespace rgnav

@@ -18,6 +18,7 @@ namespace {
 
 constexpr RegionId kRegion = 1;
 const GatewaySegment kDoor{{0.0, 0.0}, {1.0, 0.0}};  // left of it: y > 0
+constexpr double kNoReturnFreeRangeM = 3.0;           // a beam without return sees this far
 
 // A 360-beam scan from -pi, every beam `range` long, taken at (x, y) heading `theta`.
 StoredScan scanAt(DataId id, double x, double y, double theta, float range) {
@@ -49,7 +50,7 @@ unsigned stood(const std::vector<StoredScan>& scans) {
 
 unsigned seen(const std::vector<StoredScan>& scans) {
   const RgMapState state = stateWith(scans);
-  return sidesSeenFrom(state, state.regions.at(kRegion), kDoor, DoorSideProbe{});
+  return sidesSeenFrom(state, state.regions.at(kRegion), kDoor, DoorSideProbe{}, kNoReturnFreeRangeM);
 }
 
 }  // namespace

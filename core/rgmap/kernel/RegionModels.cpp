@@ -18,12 +18,13 @@ bool sameSegments(const std::vector<GatewaySegment>& a, const std::vector<Gatewa
 // Whether `doorInMap`, a door no region is attached to, still separates `region` from another
 // one: `region`'s robot stood on one side of it only, and another region saw it from the other.
 bool separatesFromAnother(const RgMapState& state, const Region& region, const GatewaySegment& doorInMap,
-                          const DoorSideProbe& probe) {
+                          const DoorSideProbe& probe, double noReturnFreeRangeM) {
   const unsigned stood = sidesStoodOn(state, region, doorInMap, probe);
   if (stood != kLeftSide && stood != kRightSide) return false;
   const unsigned beyond = kBothSides & ~stood;
   return std::any_of(state.regions.begin(), state.regions.end(), [&](const auto& entry) {
-    return entry.first != region.id && (sidesSeenFrom(state, entry.second, doorInMap, probe) & beyond) != 0;
+    return entry.first != region.id &&
+           (sidesSeenFrom(state, entry.second, doorInMap, probe, noReturnFreeRangeM) & beyond) != 0;
   });
 }
 
@@ -40,7 +41,8 @@ std::vector<GatewaySegment> regionGatewaySegments(const RgMapState& state, const
   return out;
 }
 
-std::vector<GatewaySegment> otherDoorLines(const RgMapState& state, const Region& region, const DoorSideProbe& probe) {
+std::vector<GatewaySegment> otherDoorLines(const RgMapState& state, const Region& region, const DoorSideProbe& probe,
+                                          double noReturnFreeRangeM) {
   std::vector<GatewaySegment> out;
   for (const auto& [id, gateway] : state.gateways) {
     const bool own = std::any_of(gateway.sides.begin(), gateway.sides.end(),
@@ -50,7 +52,8 @@ std::vector<GatewaySegment> otherDoorLines(const RgMapState& state, const Region
                                       [](const GatewaySideRef& side) { return side.region != 0; });
     if (!attached) {
       const PlacedGateway inMap = placeGateway(gateway);
-      if (!separatesFromAnother(state, region, {inMap.gatewayPoints[0], inMap.gatewayPoints[1]}, probe)) continue;
+      const GatewaySegment line{inMap.gatewayPoints[0], inMap.gatewayPoints[1]};
+      if (!separatesFromAnother(state, region, line, probe, noReturnFreeRangeM)) continue;
     }
     const PlacedGateway placed = placeGateway(gateway, region.frame);
     out.push_back({placed.gatewayPoints[0], placed.gatewayPoints[1]});
@@ -109,7 +112,8 @@ RegionModels::Model& RegionModels::upToDate(const RgMapState& state, RegionId id
   const Region& r = region->second;
   const std::vector<GatewaySegment> gateways = regionGatewaySegments(state, r);
   std::vector<GatewaySegment> cutting = gateways;
-  const std::vector<GatewaySegment> others = otherDoorLines(state, r, config_.unattachedDoors);
+  const std::vector<GatewaySegment> others =
+      otherDoorLines(state, r, config_.unattachedDoors, config_.evidence.freespace.noReturnFreeRangeM);
   cutting.insert(cutting.end(), others.begin(), others.end());
   const std::vector<OwnDoor> doors = ownDoors(state, r);
   const std::vector<GatewaySegment> frames = doorFrameLines(doors, config_.doorFrames);

@@ -55,7 +55,8 @@ struct RegionModelConfig {
 std::vector<GatewaySegment> regionGatewaySegments(const RgMapState& state, const Region& region);
 
 // The lines of every door that is not neutralised and not the region's own, and has a region on a
-// side or separates the region from another one (DoorSides.h), in the region's frame. With the
+// side or separates the region from another one (DoorSides.h; `noReturnFreeRangeM` as the
+// region freespace's), in the region's frame. With the
 // region's own gateway lines they cut its beams (thesis 5.2: "laser beams that cross a gateway are
 // filtered out"; ours: every such door, not only its own): a region also sees through doors
 // between other regions (through an open room into the next one), and what lies behind them is no
@@ -68,7 +69,8 @@ std::vector<GatewaySegment> regionGatewaySegments(const RgMapState& state, const
 // between two rooms the robot entered from the hallway is one of them (Freiburg52: each room's
 // region saw half the other room through it).
 std::vector<GatewaySegment> otherDoorLines(const RgMapState& state, const Region& region,
-                                          const DoorSideProbe& probe = {});
+                                          const DoorSideProbe& probe = {},
+                                          double noReturnFreeRangeM = FreespaceConfig{}.noReturnFreeRangeM);
 
 // One of the region's own doors (not neutralised) in the region's frame, with the direction from
 // its crossing point in the region to the one beyond.
