@@ -5,6 +5,9 @@
 // (figure 6.4) is repaired when it is later observed from inside the room, or only reported when
 // the robot leaves through it: the hallway's region is split where the path crossed the door,
 // and an object of the room named before the split keeps its name in the room's new region.
+// A known door the robot passes while the detector reports nothing of it (the detector lost it)
+// is traversed all the same once the robot stands beyond it; the detector's own report of that
+// passage, coming late, changes nothing then.
 // A door the detector reports anew under another ID is the known door: traversed out of the room
 // it keeps the room and the hallway apart (its crossing points numbered from the room's side),
 // and seen again from the west of the ring it closes the loop as the first door would; seen
@@ -75,6 +78,22 @@ void checkRepairedRoom(const RgMappingKernel& k) {
   CPPUNIT_ASSERT_EQUAL(RegionId(1), k.currentRegionId());
 }
 
+// After a tour into room 1, out, and into it again: the hallway and the room are two regions
+// joined by door 11, and the robot is in the room's region with every scan it took in the room.
+void checkRoomRevisited(const RgMappingKernel& k) {
+  const RgMapState& s = k.state();
+  CPPUNIT_ASSERT_EQUAL(std::size_t(2), s.regions.size());
+  const Gateway& door = s.gateways.at(1);
+  CPPUNIT_ASSERT(!door.neutralised);
+  const RegionId hallway = door.sides[kSideA].region, room = door.sides[kSideB].region;
+  CPPUNIT_ASSERT(hallway == 1 && room == 2);
+  CPPUNIT_ASSERT_EQUAL(room, k.currentRegionId());
+  for (const auto& [id, region] : s.regions)
+    for (DataId scan : region.scans)
+      CPPUNIT_ASSERT_EQUAL_MESSAGE("scan " + std::to_string(scan), s.scans.at(scan).corrected.y > 2.0 ? room : hallway,
+                                   id);
+}
+
 }  // namespace
 
 class RgMapLoopsTest : public CppUnit::TestFixture {
@@ -83,6 +102,8 @@ class RgMapLoopsTest : public CppUnit::TestFixture {
   CPPUNIT_TEST(doorMissedOnEntryIsRepairedWhenSeenFromInside);
   CPPUNIT_TEST(doorMissedOnEntryIsRepairedWhenTraversedOut);
   CPPUNIT_TEST(repairedRoomKeepsItsObjectNames);
+  CPPUNIT_TEST(knownDoorPassedWithoutReportIsTraversed);
+  CPPUNIT_TEST(lateReportOfAPassedDoorChangesNothing);
   CPPUNIT_TEST(doorDetectedAnewIsTheKnownDoor);
   CPPUNIT_TEST(doorDetectedAnewClosesTheRing);
   CPPUNIT_TEST(doorSeenThroughAnotherDoorClosesNothing);
@@ -172,6 +193,32 @@ class RgMapLoopsTest : public CppUnit::TestFixture {
     const std::vector<std::string> names = objectNamesOf(k.state().regions.at(2), k.description(2).objects);
     CPPUNIT_ASSERT(std::find(names.begin(), names.end(), "cabinet") != names.end());
     CPPUNIT_ASSERT(k.checkConsistency().empty());
+  }
+
+  void knownDoorPassedWithoutReportIsTraversed() {
+    SyntheticTour tour(rgnav::testing::hallwayWithTwoRooms(), rgnav::testing::kTourDrift);
+    tour.driveThrough({{1, 0.9}, {4, 0.9}, {4, 4.5}, {4, 0.9}, {1, 0.9}});  // into room 1 and out again
+    tour.setReports(11, DoorReports::None);
+    tour.driveThrough({{4, 0.9}, {4, 4.5}});  // in once more, unreported
+    RgMappingKernel k;
+    feedAll(k, tour.inputs(), 0, tour.inputs().size());
+    checkRoomRevisited(k);
+    CPPUNIT_ASSERT(happened(k, RgMapEventKind::GatewayRepaired));
+  }
+
+  void lateReportOfAPassedDoorChangesNothing() {
+    SyntheticTour tour(rgnav::testing::hallwayWithTwoRooms(), rgnav::testing::kTourDrift);
+    tour.driveThrough({{1, 0.9}, {4, 0.9}, {4, 4.5}, {4, 0.9}, {1, 0.9}, {4, 0.9}, {4, 4.5}});
+    std::vector<KernelInput> inputs = tour.inputs();
+    // The detector reports the second entry when the robot is 1 m beyond the door (four scans on).
+    const auto entry = std::find_if(inputs.rbegin(), inputs.rend(), [](const KernelInput& in) {
+                         return in.event && in.event->kind == GatewayEventKind::Traversed;
+                       }).base() - 1;
+    CPPUNIT_ASSERT(std::all_of(entry + 1, entry + 5, [](const KernelInput& in) { return in.scan.has_value(); }));
+    std::rotate(entry, entry + 1, entry + 5);
+    RgMappingKernel k;
+    feedAll(k, inputs, 0, inputs.size());
+    checkRoomRevisited(k);
   }
 
   void doorDetectedAnewIsTheKnownDoor() {

@@ -45,11 +45,14 @@ bool seenThroughAnotherDoor(const RgMapState& state, GatewayId id, const Eigen::
   return false;
 }
 
-// Whether the robot's last traversal went through gateway `id` into `region`.
-bool lastTraversalInto(const RgMapState& state, GatewayId id, RegionId region) {
-  const auto last = std::find_if(state.events.rbegin(), state.events.rend(),
-                                 [](const RgMapEvent& e) { return e.kind == K::GatewayTraversed; });
-  return last != state.events.rend() && last->gateway == id && last->other == region;
+// Whether the robot's last passage went through gateway `id` into `region`: a traversal, or a
+// repaired missed traversal (which may have merged the region it made into the one beyond).
+bool lastPassageInto(const RgMapState& state, GatewayId id, RegionId region) {
+  const auto last = std::find_if(state.events.rbegin(), state.events.rend(), [](const RgMapEvent& e) {
+    return e.kind == K::GatewayTraversed || e.kind == K::GatewayRepaired;
+  });
+  if (last == state.events.rend() || last->gateway != id) return false;
+  return last->kind == K::GatewayRepaired || last->other == region;
 }
 
 }  // namespace
@@ -82,6 +85,22 @@ void RgMappingKernel::addScan(const LaserScan& scan, const Pose2D& corrected) {
   state_.scans.emplace(scan.id, StoredScan{scan, corrected});
   state_.regions.at(state_.current).scans.push_back(scan.id);
   state_.lastScanId = scan.id;
+  repairPassedDoor(corrected, scan.id);
+}
+
+void RgMappingKernel::repairPassedDoor(const Pose2D& robot, DataId scan) {
+  const Eigen::Vector2d at(robot.x, robot.y);
+  for (const auto& [id, g] : state_.gateways) {
+    if (!g.door() || g.neutralised) continue;
+    const std::optional<std::size_t> crossing = robotCrossing(g, at, config_.sides);
+    if (!crossing || seenThroughAnotherDoor(state_, id, at, *crossing)) continue;
+    for (std::size_t side : {kSideA, kSideB}) {
+      const GatewaySideRef& ref = g.sides[side];
+      if (ref.crossing != *crossing || ref.region == 0 || ref.region == state_.current) continue;
+      repairMissedCrossing(id, side, scan + 1);  // may change the gateways: no further look
+      return;
+    }
+  }
 }
 
 void RgMappingKernel::addGatewayEvent(const GatewayEvent& event, const Pose2D& lastScanCorrected) {
@@ -216,7 +235,7 @@ void RgMappingKernel::traverse(const GatewayEvent& event, const Pose2D& odomToMa
     return;
   }
   // Two tracks of one door (an alias, see the header) both report the robot passing it.
-  if (state_.gateways.at(id).sides[*to].region == state_.current && lastTraversalInto(state_, id, state_.current))
+  if (state_.gateways.at(id).sides[*to].region == state_.current && lastPassageInto(state_, id, state_.current))
     return;
   repairMissedCrossing(id, *from, t.scanId);
   ++state_.gateways.at(id).traversalsFrom[*from];
