@@ -76,9 +76,10 @@ bool GatewayDetectionService::followOnce() {
 void GatewayDetectionService::checkpoint() {
   if (options_.checkpointFile.empty()) return;
   try {
+    const auto began = pacer_.now();
     const std::vector<GatewayEvent> events(events_.records().begin(), events_.records().end());
     writeFileAtomically(options_.checkpointFile, serializeDetection({detector_->state(), events}));
-    pacer_.written();
+    pacer_.written(began);
     health_.clearError("checkpoint");
   } catch (const FileError& e) {
     health_.setError("checkpoint", e.what());

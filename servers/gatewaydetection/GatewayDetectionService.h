@@ -2,7 +2,7 @@
 // follows the Laser module's raw scans by ID ("the GDM continuously acquires raw laser
 // readings"), runs the GatewayDetector on every scan, keeps the buffer of gateway events for
 // consumers and checkpoints detector and buffer atomically at most once per checkpointIntervalS
-// while detecting and at the end (CheckpointPacer.h). After a restart it reloads the checkpoint and
+// (less often as they grow) while detecting and at the end (CheckpointPacer.h). After a restart it reloads the checkpoint and
 // goes on after the last scan it holds, so events keep their IDs and nothing is lost: the scans it
 // sees again give the same events under the same IDs.
 // Where we differ: gateways are tracked in the odometry frame of the scans, not with the
@@ -30,7 +30,7 @@ struct GatewayDetectionServiceOptions {
   std::string checkpointFile;          // empty: no checkpoints
   std::size_t eventCapacity = 100000;  // events held for consumers
   std::uint32_t fetchBatch = 100;      // scans asked from the Laser module per call
-  double checkpointIntervalS = 1.0;    // at most one checkpoint per interval while detecting (CheckpointPacer.h)
+  double checkpointIntervalS = 1.0;    // at least this long between checkpoints while detecting (CheckpointPacer.h)
 };
 
 class GatewayDetectionService {

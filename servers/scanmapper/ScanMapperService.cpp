@@ -109,8 +109,9 @@ bool ScanMapperService::followOnce() {
 void ScanMapperService::checkpoint() {
   if (options_.checkpointFile.empty()) return;
   try {
+    const auto began = pacer_.now();
     writeFileAtomically(options_.checkpointFile, serializeState(mapper_.state()));
-    pacer_.written();
+    pacer_.written(began);
     health_.clearError("checkpoint");
   } catch (const FileError& e) {
     health_.setError("checkpoint", e.what());

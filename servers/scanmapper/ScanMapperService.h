@@ -1,7 +1,8 @@
 // ScanMapperService: the ScanMapper module's work behind its servant (thesis 5.2): follows the
 // Laser module by ID (as consumer "<module>"), feeds every scan to the SLAM core, keeps the
 // scans it served for consumers, and checkpoints the SLAM state atomically at most once per
-// checkpointIntervalS while mapping and at the end (DESIGN.md "State survives"; CheckpointPacer.h).
+// checkpointIntervalS (less often as it grows) while mapping and at the end (DESIGN.md "State
+// survives"; CheckpointPacer.h).
 // After a restart it reloads the checkpoint, refills its scan buffer from the Laser module and
 // goes on after the last scan the checkpoint holds: the mapper continues bit for bit as if it had
 // not stopped, so no scan is lost, and the scans it maps again give the same corrected scans
@@ -25,7 +26,7 @@ struct ScanMapperServiceOptions {
   std::string checkpointFile;           // empty: no checkpoints
   std::size_t bufferCapacity = 20000;   // scans held for consumers
   std::uint32_t fetchBatch = 100;       // scans asked from the Laser module per call
-  double checkpointIntervalS = 1.0;     // at most one checkpoint per interval while mapping (CheckpointPacer.h)
+  double checkpointIntervalS = 1.0;     // at least this long between checkpoints while mapping (CheckpointPacer.h)
 };
 
 class ScanMapperService {
