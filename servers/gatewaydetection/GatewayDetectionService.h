@@ -2,9 +2,9 @@
 // follows the Laser module's raw scans by ID ("the GDM continuously acquires raw laser
 // readings"), runs the GatewayDetector on every scan, keeps the buffer of gateway events for
 // consumers and checkpoints detector and buffer atomically at most once per checkpointIntervalS
-// (less often as they grow) while detecting and at the end (CheckpointPacer.h). After a restart it reloads the checkpoint and
-// goes on after the last scan it holds, so events keep their IDs and nothing is lost: the scans it
-// sees again give the same events under the same IDs.
+// (less often as they grow) while detecting and at the end (CheckpointPacer.h). After a restart
+// it reloads the checkpoint and goes on after the last scan it holds, so events keep their IDs
+// and nothing is lost: the scans it sees again give the same events under the same IDs.
 // Where we differ: gateways are tracked in the odometry frame of the scans, not with the
 // ScanMapper's corrected poses. A gateway is tracked over a few metres of driving, where odometry
 // is good; corrected poses change whenever the pose graph is optimised, and how far the

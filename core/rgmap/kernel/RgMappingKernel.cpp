@@ -97,8 +97,7 @@ void RgMappingKernel::repairPassedDoor(const Pose2D& robot, DataId scan) {
     for (std::size_t side : {kSideA, kSideB}) {
       const GatewaySideRef& ref = g.sides[side];
       if (ref.crossing != *crossing || ref.region == 0 || ref.region == state_.current) continue;
-      repairMissedCrossing(id, side, scan + 1);  // may change the gateways: no further look
-      return;
+      if (repairMissedCrossing(id, side, scan + 1)) return;  // the gateways changed: no further look
     }
   }
 }
@@ -260,10 +259,10 @@ void RgMappingKernel::traverse(const GatewayEvent& event, const Pose2D& odomToMa
   leave(left, t.scanId);
 }
 
-void RgMappingKernel::repairMissedCrossing(GatewayId id, std::size_t robotSide, DataId before) {
+bool RgMappingKernel::repairMissedCrossing(GatewayId id, std::size_t robotSide, DataId before) {
   const RegionId cur = state_.current;
   const Gateway& g = state_.gateways.at(id);
-  if (g.sides[robotSide].region == cur) return;
+  if (g.sides[robotSide].region == cur) return false;
   std::vector<DataId> visit;
   std::vector<Eigen::Vector2d> path;
   for (DataId s : state_.regions.at(cur).scans)
@@ -273,7 +272,7 @@ void RgMappingKernel::repairMissedCrossing(GatewayId id, std::size_t robotSide, 
       path.emplace_back(p.x, p.y);
     }
   const std::optional<std::size_t> step = lastPathCrossing(g, path, g.sides[robotSide].crossing);
-  if (!step) return;
+  if (!step) return false;
 
   const DataId k = visit[*step];
   const RegionId split = createRegion(state_, state_.scans.at(k).corrected, k);
@@ -297,6 +296,7 @@ void RgMappingKernel::repairMissedCrossing(GatewayId id, std::size_t robotSide, 
   leave(cur, k);
   joinSide(id, otherSide(robotSide), cur, k);
   joinSide(id, robotSide, split, k);
+  return true;
 }
 
 void RgMappingKernel::leave(RegionId region, DataId scan) {

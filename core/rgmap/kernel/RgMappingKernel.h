@@ -186,8 +186,9 @@ class RgMappingKernel {
   // `region` lies on side `side` of gateway `id`: attach it, or merge it with the region there.
   // Returns the region that lies there now.
   RegionId joinSide(GatewayId id, std::size_t side, RegionId region, DataId scan);
-  // The repair of a missed traversal (see above), looking at the current visit's scans before `before`.
-  void repairMissedCrossing(GatewayId id, std::size_t robotSide, DataId before);
+  // The repair of a missed traversal (see above), looking at the current visit's scans before
+  // `before`; whether there was one to repair.
+  bool repairMissedCrossing(GatewayId id, std::size_t robotSide, DataId before);
   // A known door the robot's path crossed without a traversal report (see above), repaired once
   // the robot stands on the door's other side.
   void repairPassedDoor(const Pose2D& robot, DataId scan);
