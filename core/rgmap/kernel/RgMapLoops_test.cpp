@@ -60,6 +60,14 @@ SyntheticTour missedDoorTour(DoorReports whileInside,
   return tour;
 }
 
+// Every scan north of door 11's line (y = 2) lies in `room`, every other one in `hallway`.
+void checkScansSplitAtDoor11(const RgMapState& s, RegionId room, RegionId hallway) {
+  for (const auto& [id, region] : s.regions)
+    for (DataId scan : region.scans)
+      CPPUNIT_ASSERT_EQUAL_MESSAGE("scan " + std::to_string(scan), s.scans.at(scan).corrected.y > 2.0 ? room : hallway,
+                                   id);
+}
+
 // Two regions split by door 11 (detector ID): the hallway's scans in region 1, the room's in region 2.
 void checkRepairedRoom(const RgMappingKernel& k) {
   const RgMapState& s = k.state();
@@ -71,9 +79,7 @@ void checkRepairedRoom(const RgMappingKernel& k) {
   const RegionId room = door.sides[kSideA].region;  // the side it was first seen from: the room
   CPPUNIT_ASSERT_EQUAL(RegionId(2), room);
   CPPUNIT_ASSERT_EQUAL(RegionId(1), door.sides[kSideB].region);
-  for (const auto& [id, region] : s.regions)
-    for (DataId scan : region.scans)
-      CPPUNIT_ASSERT_EQUAL_MESSAGE("scan " + std::to_string(scan), s.scans.at(scan).corrected.y > 2.0 ? room : 1, id);
+  checkScansSplitAtDoor11(s, room, 1);
   CPPUNIT_ASSERT(happened(k, RgMapEventKind::GatewayRepaired));
   CPPUNIT_ASSERT_EQUAL(RegionId(1), k.currentRegionId());
 }
@@ -88,10 +94,7 @@ void checkRoomRevisited(const RgMappingKernel& k) {
   const RegionId hallway = door.sides[kSideA].region, room = door.sides[kSideB].region;
   CPPUNIT_ASSERT(hallway == 1 && room == 2);
   CPPUNIT_ASSERT_EQUAL(room, k.currentRegionId());
-  for (const auto& [id, region] : s.regions)
-    for (DataId scan : region.scans)
-      CPPUNIT_ASSERT_EQUAL_MESSAGE("scan " + std::to_string(scan), s.scans.at(scan).corrected.y > 2.0 ? room : hallway,
-                                   id);
+  checkScansSplitAtDoor11(s, room, hallway);
 }
 
 }  // namespace
