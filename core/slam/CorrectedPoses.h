@@ -4,7 +4,11 @@
 // prediction alone). odomToMap is the raw-odometry -> map transform at a scan, thesis 3.3.5:
 // the scan is found by ID (the nearest held ID), never by distance, so a place visited twice is
 // corrected with the transform of the right visit.
+// revisedPose gives the pose a scan had right after an earlier revision (optimisation), from the
+// keyframe poses that revision kept (SlamState::revisions).
 #pragma once
+
+#include <cstdint>
 
 #include "core/common/Pose2D.h"
 #include "core/common/SensorData.h"
@@ -14,6 +18,15 @@ namespace rgnav {
 
 // Throws NotAvailableError if no scan with this ID was input.
 Pose2D correctedPose(const SlamState& state, DataId scanId);
+
+// The corrected pose scan `scanId` had right after it was input (ScanRecord::mapped). Throws
+// NotAvailableError if no scan with this ID was input.
+Pose2D mappedPose(const SlamState& state, DataId scanId);
+
+// The corrected pose of scan `scanId` right after revision `revision` (PoseRevision::number).
+// Throws InvalidArgumentError unless the scan was input before that revision ran (scanId <
+// atScan), NotAvailableError for a scan that was not input or a revision that is not kept.
+Pose2D revisedPose(const SlamState& state, DataId scanId, std::uint64_t revision);
 
 // The map pose of an odometry pose taken near scan `scanId`: correctedPose(s) ⊕ odometry(s)^-1 ⊕
 // odometryPose, s being the held scan nearest to scanId by ID (the earlier one on a tie).

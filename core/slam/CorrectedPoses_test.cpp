@@ -1,6 +1,7 @@
 // Tests corrected poses by scan ID on a hand-made state: keyframes keep their pose, filtered scans
 // are interpolated through odometry between the surrounding keyframes, and odomToMap picks the
-// transform of the nearest scan by ID (thesis 3.3.5), even where the odometry poses coincide.
+// transform of the nearest scan by ID (thesis 3.3.5), even where the odometry poses coincide;
+// poses as mapped and after a kept revision.
 #include <cppunit/extensions/HelperMacros.h>
 
 #include <cmath>
@@ -27,9 +28,10 @@ rgnav::SlamState handMade() {
   for (rgnav::DataId id = 10; id <= 14; ++id) {
     const bool keyframe = id == 10 || id == 14;
     const rgnav::KeyframeIndex previous = id < 14 ? 0 : 1;
-    state.scans.push_back({id, double(id), {double(id - 10), 0, 0}, keyframe ? previous : rgnav::kNoKeyframe, previous});
+    state.scans.push_back(
+        {id, double(id), {double(id - 10), 0, 0}, keyframe ? previous : rgnav::kNoKeyframe, previous, {}});
   }
-  state.scans.push_back({20, 20.0, {2, 0, 0}, 2, 2});
+  state.scans.push_back({20, 20.0, {2, 0, 0}, 2, 2, {7, 7, 0}});
   return state;
 }
 
@@ -41,6 +43,8 @@ class CorrectedPosesTest : public CppUnit::TestFixture {
   CPPUNIT_TEST(filteredScansAreInterpolated);
   CPPUNIT_TEST(odomToMapUsesTheNearestScanById);
   CPPUNIT_TEST(unknownIdsAreTypedErrors);
+  CPPUNIT_TEST(mappedPoseIsTheStoredOne);
+  CPPUNIT_TEST(revisedPosesUseTheRevisionsKeyframes);
   CPPUNIT_TEST_SUITE_END();
 
  public:
@@ -72,6 +76,28 @@ class CorrectedPosesTest : public CppUnit::TestFixture {
     CPPUNIT_ASSERT_THROW(rgnav::correctedPose(state, 15), rgnav::NotAvailableError);
     CPPUNIT_ASSERT_THROW(rgnav::correctedPose(state, 9), rgnav::NotAvailableError);
     CPPUNIT_ASSERT_THROW(rgnav::odomToMap(rgnav::SlamState{}, 1, {}), rgnav::NotAvailableError);
+  }
+  void mappedPoseIsTheStoredOne() {
+    const auto state = handMade();
+    CPPUNIT_ASSERT(near(Pose2D{7, 7, 0}, rgnav::mappedPose(state, 20)));
+    CPPUNIT_ASSERT_THROW(rgnav::mappedPose(state, 15), rgnav::NotAvailableError);
+  }
+  void revisedPosesUseTheRevisionsKeyframes() {
+    auto state = handMade();
+    // Revision 3 ran while scan 14 was input and knew keyframe 10 only; revision 4 ran after the
+    // input (at 21) and knew all three keyframes, with other poses than the current ones.
+    state.counters.optimizations = 4;
+    state.revisions.push_back({3, 14, {{0, 3, 0}}});
+    state.revisions.push_back({4, 21, {{0, -1, 0}, {4, -2, 0}, {2, 9, 0}}});
+    // Scan 11 after revision 3: keyframe 10's prediction alone (no later keyframe then).
+    CPPUNIT_ASSERT(near(Pose2D{1, 3, 0}, rgnav::revisedPose(state, 11, 3)));
+    // After revision 4: interpolated between its poses of keyframes 10 and 14.
+    CPPUNIT_ASSERT(near(Pose2D{1, -1.25, 0}, rgnav::revisedPose(state, 11, 4)));
+    CPPUNIT_ASSERT(near(Pose2D{2, 9, 0}, rgnav::revisedPose(state, 20, 4)));
+    // Scan 14 was input while revision 3 ran: not revised by it.
+    CPPUNIT_ASSERT_THROW(rgnav::revisedPose(state, 14, 3), rgnav::InvalidArgumentError);
+    CPPUNIT_ASSERT_THROW(rgnav::revisedPose(state, 11, 2), rgnav::NotAvailableError);
+    CPPUNIT_ASSERT_THROW(rgnav::revisedPose(state, 15, 4), rgnav::NotAvailableError);
   }
 };
 CPPUNIT_TEST_SUITE_REGISTRATION(CorrectedPosesTest);

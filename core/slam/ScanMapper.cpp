@@ -52,7 +52,8 @@ ScanOutcome ScanMapper::addScan(const LaserScan& scan) {
       state_.keyframes.empty() || isKeyframe(state_.keyframes.back().odometry, scan.odometry, config_.filter);
   if (keyframe) addKeyframe(scan, outcome);
   const auto latest = static_cast<KeyframeIndex>(state_.keyframes.size() - 1);
-  state_.scans.push_back({scan.id, scan.stamp, scan.odometry, keyframe ? latest : kNoKeyframe, latest});
+  state_.scans.push_back({scan.id, scan.stamp, scan.odometry, keyframe ? latest : kNoKeyframe, latest, {}});
+  state_.scans.back().mapped = rgnav::correctedPose(state_, scan.id);
   return outcome;
 }
 
@@ -83,7 +84,7 @@ void ScanMapper::addKeyframe(const LaserScan& scan, ScanOutcome& outcome) {
   const bool due =
       state_.keyframes.size() - state_.keyframesAtLastOptimization >= config_.graph.keyframesBetweenOptimizations;
   if (state_.pendingLoops > 0 && (largeCorrection || due)) {
-    runOptimization();
+    runOptimization(scan.id);
     outcome.optimized = true;
   }
 }
@@ -138,10 +139,10 @@ std::size_t ScanMapper::closeLoops(bool& largeCorrection) {
 }
 
 void ScanMapper::optimize() {
-  if (state_.pendingLoops > 0) runOptimization();
+  if (state_.pendingLoops > 0) runOptimization(lastInputId() + 1);
 }
 
-void ScanMapper::runOptimization() {
+void ScanMapper::runOptimization(DataId atScan) {
   std::vector<Pose2D> poses;
   poses.reserve(state_.keyframes.size());
   for (const Keyframe& keyframe : state_.keyframes) poses.push_back(keyframe.pose);
@@ -150,9 +151,19 @@ void ScanMapper::runOptimization() {
   state_.pendingLoops = 0;
   state_.keyframesAtLastOptimization = state_.keyframes.size();
   ++state_.counters.optimizations;
+  state_.revisions.push_back({state_.counters.optimizations, atScan, std::move(poses)});
+  if (state_.revisions.size() > config_.graph.keptRevisions)
+    state_.revisions.erase(state_.revisions.begin(),
+                           state_.revisions.end() - static_cast<std::ptrdiff_t>(config_.graph.keptRevisions));
 }
 
 Pose2D ScanMapper::correctedPose(DataId scanId) const { return rgnav::correctedPose(state_, scanId); }
+
+Pose2D ScanMapper::mappedPose(DataId scanId) const { return rgnav::mappedPose(state_, scanId); }
+
+Pose2D ScanMapper::revisedPose(DataId scanId, std::uint64_t revision) const {
+  return rgnav::revisedPose(state_, scanId, revision);
+}
 
 Pose2D ScanMapper::odomToMap(DataId scanId, const Pose2D& odometryPose) const {
   return rgnav::odomToMap(state_, scanId, odometryPose);

@@ -5,11 +5,16 @@
 // prediction); older keyframes are grouped into rigid submaps that revisits are correlated
 // against; loop constraints trigger an incremental pose graph optimisation (Ceres). Every input
 // scan ID gets a corrected pose, and the odometry -> map transform at any scan ID (thesis 3.3.5).
+// For consumers that follow the map as it was made, every scan also keeps its pose as mapped
+// (right after it was input) and every optimisation its keyframe poses (the latest
+// graph.keptRevisions of them), so that they can replay the same sequence of poses whenever
+// they read.
 // All state that matters lives in a SlamState, which the caller can serialise and restore.
 #pragma once
 
 #include <Eigen/Core>
 #include <cstddef>
+#include <cstdint>
 #include <vector>
 
 #include "core/common/SensorData.h"
@@ -43,6 +48,10 @@ class ScanMapper {
 
   // Corrected pose of an input scan (NotAvailableError for an unknown ID).
   Pose2D correctedPose(DataId scanId) const;
+  // Its pose right after it was input (ScanRecord::mapped; NotAvailableError for an unknown ID).
+  Pose2D mappedPose(DataId scanId) const;
+  // Its pose right after a kept revision (CorrectedPoses.h revisedPose).
+  Pose2D revisedPose(DataId scanId, std::uint64_t revision) const;
   // Map pose of an odometry pose taken near scan `scanId` (nearest held ID; thesis 3.3.5).
   Pose2D odomToMap(DataId scanId, const Pose2D& odometryPose) const;
   // 0 before the first scan.
@@ -63,7 +72,8 @@ class ScanMapper {
   void addSubmapIfComplete();
   // Adds loop constraints for the newest keyframe; returns how many and whether one moves it far.
   std::size_t closeLoops(bool& largeCorrection);
-  void runOptimization();
+  // Optimises the pose graph and keeps the result as a revision made while scan `atScan` was input.
+  void runOptimization(DataId atScan);
 
   SlamConfig config_;
   SlamState state_;

@@ -1,9 +1,12 @@
 // Tests ScanMapper end to end on a synthetic ring corridor driven twice with drifting odometry:
 // scans are filtered, registered, the loop is closed, every scan ID gets a corrected pose close to
-// the truth; and the argument checks.
+// the truth; the poses as mapped and the kept revisions give the poses a follower saw at each
+// step; and the argument checks.
 #include <cppunit/extensions/HelperMacros.h>
 
 #include <cmath>
+#include <utility>
+#include <vector>
 
 #include "core/common/Errors.h"
 #include "core/slam/ScanMapper.h"
@@ -30,6 +33,8 @@ class ScanMapperTest : public CppUnit::TestFixture {
   CPPUNIT_TEST_SUITE(ScanMapperTest);
   CPPUNIT_TEST(closesTheRingAndCorrectsEveryScan);
   CPPUNIT_TEST(odomToMapUsesTheTransformAtTheScan);
+  CPPUNIT_TEST(keepsThePosesOfEachStep);
+  CPPUNIT_TEST(keepsTheLatestRevisionsOnly);
   CPPUNIT_TEST(rejectsRepeatedIdsAndBadConfig);
   CPPUNIT_TEST_SUITE_END();
 
@@ -65,6 +70,42 @@ class ScanMapperTest : public CppUnit::TestFixture {
     const Pose2D last = mapper.correctedPose(400);
     CPPUNIT_ASSERT(std::hypot(late.x - last.x, late.y - last.y) < 1e-9);
   }
+  void keepsThePosesOfEachStep() {
+    // A follower that reads every pose right after each scan sees what the mapper kept.
+    const Run run = rgnav::testing::ringRun();
+    rgnav::ScanMapper mapper;
+    std::vector<std::pair<std::uint64_t, std::vector<Pose2D>>> seenAfterRevisions;
+    for (const auto& scan : run.scans) {
+      const rgnav::ScanOutcome outcome = mapper.addScan(scan);
+      CPPUNIT_ASSERT(mapper.mappedPose(scan.id) == mapper.correctedPose(scan.id));
+      if (!outcome.optimized) continue;
+      std::vector<Pose2D> before;
+      for (const auto& s : mapper.state().scans)
+        if (s.id < scan.id) before.push_back(mapper.correctedPose(s.id));
+      seenAfterRevisions.emplace_back(mapper.state().counters.optimizations, before);
+    }
+    CPPUNIT_ASSERT(seenAfterRevisions.size() > 1);
+    for (const auto& [revision, poses] : seenAfterRevisions) {
+      CPPUNIT_ASSERT_EQUAL(revision, mapper.state().revisions[revision - 1].number);
+      for (std::size_t i = 0; i < poses.size(); ++i)
+        CPPUNIT_ASSERT(mapper.revisedPose(mapper.state().scans[i].id, revision) == poses[i]);  // bit-exact
+    }
+    // A scan mapped after a revision was made is not revised by it.
+    const auto& first = mapper.state().revisions.front();
+    CPPUNIT_ASSERT_THROW(mapper.revisedPose(first.atScan, first.number), rgnav::InvalidArgumentError);
+  }
+  void keepsTheLatestRevisionsOnly() {
+    const Run run = rgnav::testing::ringRun();
+    rgnav::SlamConfig config;
+    config.graph.keptRevisions = 2;
+    rgnav::ScanMapper mapper(config);
+    for (const auto& scan : run.scans) mapper.addScan(scan);
+    const auto& state = mapper.state();
+    CPPUNIT_ASSERT(state.counters.optimizations > 2);
+    CPPUNIT_ASSERT_EQUAL(std::size_t{2}, state.revisions.size());
+    CPPUNIT_ASSERT_EQUAL(state.counters.optimizations, state.revisions.back().number);
+    CPPUNIT_ASSERT_THROW(mapper.revisedPose(1, state.counters.optimizations - 2), rgnav::NotAvailableError);
+  }
   void rejectsRepeatedIdsAndBadConfig() {
     const Run run = rgnav::testing::ringRun();
     rgnav::ScanMapper mapper;
@@ -76,6 +117,9 @@ class ScanMapperTest : public CppUnit::TestFixture {
     rgnav::SlamConfig bad;
     bad.local.grid.resolution = 0.0;
     CPPUNIT_ASSERT_THROW(rgnav::ScanMapper{bad}, rgnav::ConfigError);
+    rgnav::SlamConfig noRevisions;
+    noRevisions.graph.keptRevisions = 0;
+    CPPUNIT_ASSERT_THROW(rgnav::ScanMapper{noRevisions}, rgnav::ConfigError);
   }
 };
 CPPUNIT_TEST_SUITE_REGISTRATION(ScanMapperTest);

@@ -92,6 +92,7 @@ void validate(const SlamConfig& c) {
   requirePositive(c.graph.functionTolerance, "graph.functionTolerance");
   requireCount(c.graph.keyframesBetweenOptimizations, "graph.keyframesBetweenOptimizations");
   requireNonNegative(c.graph.immediateCorrection, "graph.immediateCorrection");
+  requireCount(c.graph.keptRevisions, "graph.keptRevisions");
 }
 
 }  // namespace rgnav

@@ -97,6 +97,10 @@ struct PoseGraphConfig {
   double functionTolerance = 1e-4;             // relative cost change that ends an optimisation
   std::size_t keyframesBetweenOptimizations = 20;  // pending loops wait at most this many keyframes
   double immediateCorrection = 0.1;            // m; a loop moving the current pose more optimises at once
+  // Revisions (optimisations) whose keyframe poses are kept, the newest, so that a consumer that
+  // follows the map can apply each one at the scan it belongs to (SlamState::revisions); each
+  // holds every keyframe pose of its time (24 bytes a keyframe).
+  std::size_t keptRevisions = 256;
 };
 
 struct SlamConfig {

@@ -1,8 +1,10 @@
 // SlamState: everything the scan mapper must keep across a restart (DESIGN.md "State
 // survives"): every input scan's ID and odometry, the keyframes with their points and estimated
-// poses, the pose graph constraints, the frozen submaps used for loop closing, and the counters
-// that steer loop search and optimisation. Caches (grids, normals) are not part of it: they are
-// rebuilt from it, so a restored mapper continues exactly as an uninterrupted one.
+// poses, the pose graph constraints, the frozen submaps used for loop closing, the counters
+// that steer loop search and optimisation, and what a consumer needs to follow the map in the
+// order it was made: each scan's pose as mapped and the keyframe poses of the latest revisions.
+// Caches (grids, normals) are not part of it: they are rebuilt from it, so a restored mapper
+// continues exactly as an uninterrupted one.
 #pragma once
 
 #include <Eigen/Core>
@@ -24,6 +26,7 @@ struct ScanRecord {
   Pose2D odometry;
   KeyframeIndex keyframe = kNoKeyframe;  // its keyframe, or kNoKeyframe if filtered out
   KeyframeIndex previousKeyframe = kNoKeyframe;  // the latest keyframe at or before this scan
+  Pose2D mapped;  // its corrected pose right after it was input (before any later scan)
 
   friend bool operator==(const ScanRecord&, const ScanRecord&) = default;
 };
@@ -61,6 +64,17 @@ struct SubmapRecord {
   friend bool operator==(const SubmapRecord&, const SubmapRecord&) = default;
 };
 
+// One pose graph optimisation: the keyframe poses it gave (every keyframe of its time). It ran
+// while scan `atScan` was input, so it revises the scans before that one; one run after the
+// input (ScanMapper::optimize) has atScan = the last input ID + 1.
+struct PoseRevision {
+  std::uint64_t number = 0;  // SlamCounters::optimizations right after it
+  DataId atScan = 0;
+  std::vector<Pose2D> keyframePoses;
+
+  friend bool operator==(const PoseRevision&, const PoseRevision&) = default;
+};
+
 struct SlamCounters {
   std::uint64_t failedRegistrations = 0;  // keyframes placed by odometry alone
   std::uint64_t loopClosures = 0;         // loop constraints added
@@ -78,6 +92,7 @@ struct SlamState {
   std::uint64_t pendingLoops = 0;       // loop constraints not yet optimised
   std::uint64_t keyframesAtLastOptimization = 0;  // keyframe count when the graph was last optimised
   SlamCounters counters;
+  std::vector<PoseRevision> revisions;  // the latest SlamConfig::graph.keptRevisions, oldest first
 
   // 0 if no scan was input yet.
   DataId lastInputId() const { return scans.empty() ? 0 : scans.back().id; }

@@ -1,6 +1,7 @@
-// Little-endian binary encoding of SlamState (version 1) and its consistency check.
+// Little-endian binary encoding of SlamState (version 2) and its consistency check.
 #include "core/slam/SlamStateCodec.h"
 
+#include <algorithm>
 #include <bit>
 #include <cstdint>
 #include <cstring>
@@ -10,7 +11,7 @@ namespace rgnav {
 namespace {
 
 constexpr std::string_view kMagic{"RGNSLAM\0", 8};
-constexpr std::uint32_t kVersion = 1;
+constexpr std::uint32_t kVersion = 2;
 
 class Writer {
  public:
@@ -100,6 +101,7 @@ std::string serializeState(const SlamState& state) {
     w.pose(s.odometry);
     w.integer(s.keyframe);
     w.integer(s.previousKeyframe);
+    w.pose(s.mapped);
   }
   w.integer<std::uint64_t>(state.keyframes.size());
   for (const Keyframe& k : state.keyframes) {
@@ -133,6 +135,13 @@ std::string serializeState(const SlamState& state) {
   w.integer(state.counters.failedRegistrations);
   w.integer(state.counters.loopClosures);
   w.integer(state.counters.optimizations);
+  w.integer<std::uint64_t>(state.revisions.size());
+  for (const PoseRevision& r : state.revisions) {
+    w.integer(r.number);
+    w.integer<std::uint64_t>(r.atScan);
+    w.integer<std::uint64_t>(r.keyframePoses.size());
+    for (const Pose2D& p : r.keyframePoses) w.pose(p);
+  }
   return w.take();
 }
 
@@ -142,13 +151,14 @@ SlamState deserializeState(std::string_view bytes) {
   const auto version = r.integer<std::uint32_t>();
   if (version != kVersion) r.fail("version " + std::to_string(version) + ", expected " + std::to_string(kVersion));
   SlamState state;
-  state.scans.resize(r.count(16 + kPoseBytes + 8));
+  state.scans.resize(r.count(16 + 2 * kPoseBytes + 8));
   for (ScanRecord& s : state.scans) {
     s.id = r.integer<std::uint64_t>();
     s.stamp = r.real64();
     s.odometry = r.pose();
     s.keyframe = r.integer<KeyframeIndex>();
     s.previousKeyframe = r.integer<KeyframeIndex>();
+    s.mapped = r.pose();
   }
   state.keyframes.resize(r.count(16 + 2 * kPoseBytes));
   for (Keyframe& k : state.keyframes) {
@@ -184,6 +194,13 @@ SlamState deserializeState(std::string_view bytes) {
   state.counters.failedRegistrations = r.integer<std::uint64_t>();
   state.counters.loopClosures = r.integer<std::uint64_t>();
   state.counters.optimizations = r.integer<std::uint64_t>();
+  state.revisions.resize(r.count(24));
+  for (PoseRevision& revision : state.revisions) {
+    revision.number = r.integer<std::uint64_t>();
+    revision.atScan = r.integer<std::uint64_t>();
+    revision.keyframePoses.resize(r.count(kPoseBytes));
+    for (Pose2D& p : revision.keyframePoses) p = r.pose();
+  }
   r.finish();
   try {
     validate(state);
@@ -217,6 +234,20 @@ void validate(const SlamState& state) {
                 "submap at keyframe " + std::to_string(s.first) + " out of range");
   requireThat(state.keyframesAtLastOptimization <= keyframes, "optimisation mark beyond the keyframes");
   requireThat(state.distanceSinceLoop >= 0.0, "negative distance since the last loop");
+  for (std::size_t i = 0; i < state.revisions.size(); ++i) {
+    const PoseRevision& r = state.revisions[i];
+    const std::string name = "revision " + std::to_string(r.number);
+    requireThat(r.number > 0 && r.number <= state.counters.optimizations &&
+                    (i == 0 || r.number > state.revisions[i - 1].number),
+                name + ": numbers must increase up to the optimisations run");
+    requireThat(r.atScan > 0 && r.atScan <= state.lastInputId() + 1, name + ": made at an unknown scan");
+    requireThat(r.keyframePoses.size() <= keyframes, name + ": more keyframe poses than keyframes");
+    const auto before = std::lower_bound(state.scans.begin(), state.scans.end(), r.atScan,
+                                         [](const ScanRecord& s, DataId id) { return s.id < id; });
+    if (before != state.scans.begin())
+      requireThat(std::prev(before)->previousKeyframe < r.keyframePoses.size(),
+                  name + ": lacks the keyframes of the scans before it");
+  }
 }
 
 }  // namespace rgnav

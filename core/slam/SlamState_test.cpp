@@ -1,5 +1,5 @@
-// Tests the SlamState checkpoint: serialisation round trip, typed errors for corrupt bytes and
-// inconsistent states, and that a mapper restored from bytes and fed the rest of a log ends with
+// Tests the SlamState checkpoint: serialisation round trip (kept revisions included), typed errors
+// for corrupt bytes and inconsistent states, and that a mapper restored from bytes and fed the rest of a log ends with
 // exactly the state of an uninterrupted run (real Intel keyframes with raw odometry, and the
 // synthetic ring with its loop closures).
 #include <cppunit/extensions/HelperMacros.h>
@@ -68,6 +68,9 @@ class SlamStateTest : public CppUnit::TestFixture {
     const std::string bytes = rgnav::serializeState(state);
     CPPUNIT_ASSERT(rgnav::deserializeState(bytes) == state);
     CPPUNIT_ASSERT(rgnav::deserializeState(rgnav::serializeState({})) == rgnav::SlamState{});
+    const rgnav::SlamState revised = uninterrupted(rgnav::testing::ringRun().scans);
+    CPPUNIT_ASSERT(!revised.revisions.empty());
+    CPPUNIT_ASSERT(rgnav::deserializeState(rgnav::serializeState(revised)) == revised);
   }
   void corruptBytesAreTypedErrors() {
     const std::string bytes = rgnav::serializeState(uninterrupted(intelScans(30)));
@@ -90,6 +93,13 @@ class SlamStateTest : public CppUnit::TestFixture {
     rgnav::SlamState badIds = state;
     badIds.scans[3].id = badIds.scans[2].id;
     CPPUNIT_ASSERT_THROW(rgnav::validate(badIds), rgnav::InvalidArgumentError);
+    rgnav::SlamState ring = uninterrupted(rgnav::testing::ringRun().scans);
+    rgnav::SlamState lateRevision = ring;
+    lateRevision.revisions.back().number = ring.counters.optimizations + 1;
+    CPPUNIT_ASSERT_THROW(rgnav::validate(lateRevision), rgnav::InvalidArgumentError);
+    rgnav::SlamState shortRevision = ring;
+    shortRevision.revisions.back().keyframePoses.resize(1);
+    CPPUNIT_ASSERT_THROW(rgnav::deserializeState(rgnav::serializeState(shortRevision)), rgnav::CorruptStateError);
   }
   void restoreThenContinueEqualsUninterruptedIntel() { assertRestartChangesNothing(intelScans(250), 137); }
   void restoreThenContinueEqualsUninterruptedRing() {
