@@ -1,5 +1,6 @@
 // Plain C++ forms of what the ScanMapper module serves (ScanMapper.idl): scans with corrected
-// poses, by ID, with the pose graph revision they come from.
+// poses (as of the latest revision and as mapped), by ID, with the pose graph revision they come
+// from, and the revisions with the scan each was made at.
 #pragma once
 
 #include <cstdint>
@@ -11,7 +12,8 @@ namespace rgnav {
 
 struct CorrectedScan {
   LaserScan scan;
-  Pose2D corrected;
+  Pose2D corrected;  // as of the latest revision
+  Pose2D mapped;     // right after the ScanMapper took the scan in
   bool keyframe = false;
 
   friend bool operator==(const CorrectedScan&, const CorrectedScan&) = default;
@@ -29,6 +31,13 @@ struct PoseUpdate {
   Pose2D corrected;
 
   friend bool operator==(const PoseUpdate&, const PoseUpdate&) = default;
+};
+
+struct PoseRevisionInfo {
+  std::uint64_t revision = 0;
+  DataId atScan = 0;  // made while this scan was taken in: it revises the scans before it
+
+  friend bool operator==(const PoseRevisionInfo&, const PoseRevisionInfo&) = default;
 };
 
 }  // namespace rgnav

@@ -31,6 +31,21 @@ std::vector<PoseUpdate> ScanMapperClient::poses(DataId firstId, DataId lastId) {
   });
 }
 
+std::vector<PoseRevisionInfo> ScanMapperClient::revisionsSince(std::uint64_t afterRevision) {
+  return connection_.call("revisionsSince", [&](RGNav::ScanMapper_ptr m) {
+    RGNav::PoseRevisionSeq_var revisions = m->revisionsSince(afterRevision);
+    return fromIdlSeq<std::vector<PoseRevisionInfo>>(revisions.in(),
+                                                     [](const RGNav::PoseRevision& r) { return fromIdl(r); });
+  });
+}
+
+std::vector<PoseUpdate> ScanMapperClient::revisedPoses(std::uint64_t revision, DataId firstId, DataId lastId) {
+  return connection_.call("revisedPoses", [&](RGNav::ScanMapper_ptr m) {
+    RGNav::PoseUpdateSeq_var updates = m->revisedPoses(revision, firstId, lastId);
+    return fromIdlSeq<std::vector<PoseUpdate>>(updates.in(), [](const RGNav::PoseUpdate& u) { return fromIdl(u); });
+  });
+}
+
 Pose2D ScanMapperClient::correctedPose(DataId scanId) {
   return connection_.call("correctedPose", [&](RGNav::ScanMapper_ptr m) { return fromIdl(m->correctedPose(scanId)); });
 }

@@ -18,6 +18,9 @@ class ScanMapperClient : public ModuleClientOf<RGNav::ScanMapper> {
   std::uint64_t revision();
   CorrectedBatch correctedSince(DataId afterId, std::uint32_t maxCount);
   std::vector<PoseUpdate> poses(DataId firstId, DataId lastId);
+  std::vector<PoseRevisionInfo> revisionsSince(std::uint64_t afterRevision);
+  // NotAvailableError if the revision is no longer kept (ScanMapper.idl).
+  std::vector<PoseUpdate> revisedPoses(std::uint64_t revision, DataId firstId, DataId lastId);
   Pose2D correctedPose(DataId scanId);
   Pose2D odomToMap(DataId scanId, const Pose2D& odometryPose);
 

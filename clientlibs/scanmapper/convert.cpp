@@ -6,11 +6,12 @@
 namespace rgnav {
 
 RGNav::CorrectedScan toIdl(const CorrectedScan& scan) {
-  return RGNav::CorrectedScan{toIdl(scan.scan), toIdl(scan.corrected), scan.keyframe};
+  return RGNav::CorrectedScan{toIdl(scan.scan), toIdl(scan.corrected), toIdl(scan.mapped), scan.keyframe};
 }
 
 CorrectedScan fromIdl(const RGNav::CorrectedScan& scan) {
-  return CorrectedScan{fromIdl(scan.scan), fromIdl(scan.corrected), static_cast<bool>(scan.keyframe)};
+  return CorrectedScan{fromIdl(scan.scan), fromIdl(scan.corrected), fromIdl(scan.mapped),
+                       static_cast<bool>(scan.keyframe)};
 }
 
 RGNav::CorrectedScanBatch toIdl(const CorrectedBatch& batch) {
@@ -28,5 +29,11 @@ CorrectedBatch fromIdl(const RGNav::CorrectedScanBatch& batch) {
 RGNav::PoseUpdate toIdl(const PoseUpdate& update) { return RGNav::PoseUpdate{update.id, toIdl(update.corrected)}; }
 
 PoseUpdate fromIdl(const RGNav::PoseUpdate& update) { return PoseUpdate{update.id, fromIdl(update.corrected)}; }
+
+RGNav::PoseRevision toIdl(const PoseRevisionInfo& revision) {
+  return RGNav::PoseRevision{revision.revision, revision.atScan};
+}
+
+PoseRevisionInfo fromIdl(const RGNav::PoseRevision& revision) { return {revision.revision, revision.atScan}; }
 
 }  // namespace rgnav

@@ -12,5 +12,7 @@ RGNav::CorrectedScanBatch toIdl(const CorrectedBatch& batch);
 CorrectedBatch fromIdl(const RGNav::CorrectedScanBatch& batch);
 RGNav::PoseUpdate toIdl(const PoseUpdate& update);
 PoseUpdate fromIdl(const RGNav::PoseUpdate& update);
+RGNav::PoseRevision toIdl(const PoseRevisionInfo& revision);
+PoseRevisionInfo fromIdl(const RGNav::PoseRevision& revision);
 
 }  // namespace rgnav

@@ -1,4 +1,5 @@
-// Round trips of the ScanMapper.idl conversions: a batch of corrected scans and pose updates.
+// Round trips of the ScanMapper.idl conversions: a batch of corrected scans, pose updates and
+// pose revisions.
 #include <cppunit/extensions/HelperMacros.h>
 
 #include "clientlibs/scanmapper/convert.h"
@@ -9,6 +10,7 @@ class ScanMapperConvertTest : public CppUnit::TestFixture {
   CPPUNIT_TEST_SUITE(ScanMapperConvertTest);
   CPPUNIT_TEST(batchRoundTrip);
   CPPUNIT_TEST(poseUpdateRoundTrip);
+  CPPUNIT_TEST(poseRevisionRoundTrip);
   CPPUNIT_TEST_SUITE_END();
 
  public:
@@ -22,7 +24,8 @@ class ScanMapperConvertTest : public CppUnit::TestFixture {
       scan.angleIncrement = 0.01;
       scan.maxRange = 80.0;
       scan.ranges = {1.0f, LaserScan::kNoReturn, 2.5f};
-      batch.scans.push_back(CorrectedScan{scan, {double(id) + 0.01, 0.99, 0.21}, id % 2 == 1});
+      batch.scans.push_back(
+          CorrectedScan{scan, {double(id) + 0.01, 0.99, 0.21}, {double(id) - 0.02, 1.01, 0.19}, id % 2 == 1});
     }
     batch.latestId = 9;
     batch.revision = 4;
@@ -36,6 +39,10 @@ class ScanMapperConvertTest : public CppUnit::TestFixture {
   void poseUpdateRoundTrip() {
     const PoseUpdate update{12, {1.5, -2.5, 3.0}};
     CPPUNIT_ASSERT(fromIdl(toIdl(update)) == update);
+  }
+  void poseRevisionRoundTrip() {
+    const PoseRevisionInfo revision{7, 1234};
+    CPPUNIT_ASSERT(fromIdl(toIdl(revision)) == revision);
   }
 };
 CPPUNIT_TEST_SUITE_REGISTRATION(ScanMapperConvertTest);

@@ -28,6 +28,18 @@ RGNav::PoseUpdateSeq* ScanMapperImpl::poses(RGNav::DataId firstId, RGNav::DataId
   return new RGNav::PoseUpdateSeq(toIdlSeq<RGNav::PoseUpdateSeq>(updates, [](const PoseUpdate& u) { return toIdl(u); }));
 }
 
+RGNav::PoseRevisionSeq* ScanMapperImpl::revisionsSince(CORBA::ULongLong afterRevision) {
+  const auto revisions = service_.revisionsSince(afterRevision);
+  return new RGNav::PoseRevisionSeq(
+      toIdlSeq<RGNav::PoseRevisionSeq>(revisions, [](const PoseRevisionInfo& r) { return toIdl(r); }));
+}
+
+RGNav::PoseUpdateSeq* ScanMapperImpl::revisedPoses(CORBA::ULongLong revision, RGNav::DataId firstId,
+                                                   RGNav::DataId lastId) {
+  const auto updates = withIdlErrors([&] { return service_.revisedPoses(revision, firstId, lastId, maxBatch_ * 20); });
+  return new RGNav::PoseUpdateSeq(toIdlSeq<RGNav::PoseUpdateSeq>(updates, [](const PoseUpdate& u) { return toIdl(u); }));
+}
+
 RGNav::Pose2D ScanMapperImpl::correctedPose(RGNav::DataId scanId) {
   return toIdl(withIdlErrors([&] { return service_.correctedPose(scanId); }));
 }

@@ -132,7 +132,8 @@ CorrectedBatch ScanMapperService::correctedSince(DataId afterId, std::size_t max
   out.revision = mapper_.state().counters.optimizations;
   for (const LaserScan& scan : scans_.since(afterId, maxCount).records) {
     if (scan.id > out.latestId) break;
-    out.scans.push_back(CorrectedScan{scan, mapper_.correctedPose(scan.id), isKeyframe(scan.id)});
+    out.scans.push_back(
+        CorrectedScan{scan, mapper_.correctedPose(scan.id), mapper_.mappedPose(scan.id), isKeyframe(scan.id)});
   }
   out.endOfData = finished_ && (out.scans.empty() ? afterId : out.scans.back().scan.id) >= out.latestId;
   return out;
@@ -158,6 +159,27 @@ std::vector<PoseUpdate> ScanMapperService::poses(DataId first, DataId last, std:
   std::vector<PoseUpdate> out;
   for (DataId id = first; id <= std::min(last, mapper_.lastInputId()) && out.size() < cap; ++id)
     out.push_back(PoseUpdate{id, mapper_.correctedPose(id)});
+  return out;
+}
+
+std::vector<PoseRevisionInfo> ScanMapperService::revisionsSince(std::uint64_t afterRevision) {
+  std::lock_guard lock(mutex_);
+  std::vector<PoseRevisionInfo> out;
+  for (const PoseRevision& r : mapper_.state().revisions)
+    if (r.number > afterRevision) out.push_back({r.number, r.atScan});
+  return out;
+}
+
+std::vector<PoseUpdate> ScanMapperService::revisedPoses(std::uint64_t revision, DataId first, DataId last,
+                                                        std::size_t cap) {
+  if (first == 0 || last < first) throw InvalidArgumentError("revisedPoses wants 1 <= firstId <= lastId");
+  std::lock_guard lock(mutex_);
+  const auto& scans = mapper_.state().scans;
+  auto it = std::lower_bound(scans.begin(), scans.end(), first,
+                             [](const ScanRecord& r, DataId value) { return r.id < value; });
+  std::vector<PoseUpdate> out;
+  for (; it != scans.end() && it->id <= last && out.size() < cap; ++it)
+    out.push_back(PoseUpdate{it->id, mapper_.revisedPose(it->id, revision)});
   return out;
 }
 

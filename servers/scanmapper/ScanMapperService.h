@@ -1,6 +1,7 @@
 // ScanMapperService: the ScanMapper module's work behind its servant (thesis 5.2): follows the
 // Laser module by ID (as consumer "<module>"), feeds every scan to the SLAM core, keeps the
-// scans it served for consumers, and checkpoints the SLAM state atomically at most once per
+// scans it served for consumers (with their poses as mapped, and the latest revisions' poses:
+// ScanMapper.idl), and checkpoints the SLAM state atomically at most once per
 // checkpointIntervalS (less often as it grows) while mapping and at the end (DESIGN.md "State
 // survives"; CheckpointPacer.h).
 // After a restart it reloads the checkpoint, refills its scan buffer from the Laser module and
@@ -47,6 +48,11 @@ class ScanMapperService {
   Pose2D odomToMap(DataId id, const Pose2D& odometryPose);
   // Current poses of scans first..last (at most cap of them).
   std::vector<PoseUpdate> poses(DataId first, DataId last, std::size_t cap);
+  // The kept revisions after `afterRevision`, oldest first.
+  std::vector<PoseRevisionInfo> revisionsSince(std::uint64_t afterRevision);
+  // Poses of the scans first..last right after a kept revision (at most cap of them);
+  // NotAvailableError for a revision not kept, InvalidArgumentError unless first <= last < its atScan.
+  std::vector<PoseUpdate> revisedPoses(std::uint64_t revision, DataId first, DataId last, std::size_t cap);
   DataId latestCorrectedId();
   std::uint64_t revision();
 
