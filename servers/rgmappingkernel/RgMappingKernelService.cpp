@@ -2,6 +2,7 @@
 #include "servers/rgmappingkernel/RgMappingKernelService.h"
 
 #include <algorithm>
+#include <optional>
 
 #include "core/common/AtomicFile.h"
 #include "core/rgmap/kernel/RgMapCodec.h"
@@ -57,11 +58,24 @@ bool RgMappingKernelService::fetchScans() {
     after = scans_.empty() ? kernel_->state().lastScanId : scans_.back().scan.id;
   }
   CorrectedBatch batch = scanMapper_.correctedSince(after, options_.fetchBatch);
-  reviseIfNeeded(batch.revision);
   std::lock_guard lock(mutex_);
   scansEnded_ = batch.scans.empty() && batch.endOfData;
   for (CorrectedScan& s : batch.scans) scans_.push_back(std::move(s));
   return !batch.scans.empty();
+}
+
+bool RgMappingKernelService::fetchRevisions() {
+  std::uint64_t after;
+  {
+    std::lock_guard lock(mutex_);
+    after = revisions_.empty() ? kernel_->state().lastPoseRevision : revisions_.back().revision;
+  }
+  const std::vector<PoseRevisionInfo> revisions = scanMapper_.revisionsSince(after);
+  std::lock_guard lock(mutex_);
+  if (!revisions.empty() && revisions.front().revision > after + 1)
+    health_.add("pose_revisions_not_kept", revisions.front().revision - after - 1);
+  for (const PoseRevisionInfo& r : revisions) revisions_.push_back(r);
+  return !revisions.empty();
 }
 
 bool RgMappingKernelService::fetchEvents() {
@@ -84,21 +98,52 @@ bool RgMappingKernelService::fetchEvents() {
   }
 }
 
-void RgMappingKernelService::reviseIfNeeded(std::uint64_t revision) {
+std::vector<CorrectedPose> RgMappingKernelService::posesOfKernelScans(std::optional<std::uint64_t> revision) {
   DataId last;
   {
     std::lock_guard lock(mutex_);
-    if (revision == revision_) return;
     last = kernel_->state().lastScanId;
   }
-  std::vector<CorrectedPose> revised;
-  for (DataId first = 1; first <= last; first += kPoseChunk)
-    for (const PoseUpdate& u : scanMapper_.poses(first, std::min(last, first + kPoseChunk - 1)))
-      revised.push_back({u.id, u.corrected});
+  std::vector<CorrectedPose> poses;
+  for (DataId first = 1; first <= last;) {
+    const std::vector<PoseUpdate> chunk = revision ? scanMapper_.revisedPoses(*revision, first, last)
+                                                   : scanMapper_.poses(first, std::min(last, first + kPoseChunk - 1));
+    if (chunk.empty()) break;
+    for (const PoseUpdate& u : chunk) poses.push_back({u.id, u.corrected});
+    first = chunk.back().id + 1;
+  }
+  return poses;
+}
+
+void RgMappingKernelService::applyRevision(const PoseRevisionInfo& revision) {
+  bool replaced;
+  {
+    std::lock_guard lock(mutex_);
+    replaced = kernel_->state().lastScanId >= revision.atScan;  // learned of too late
+  }
+  std::vector<CorrectedPose> poses;
+  if (!replaced) {
+    try {
+      poses = posesOfKernelScans(revision.revision);
+    } catch (const NotAvailableError&) {
+      replaced = true;  // the ScanMapper no longer keeps it: it ran too far ahead
+    }
+  }
+  if (replaced) {
+    poses = posesOfKernelScans(std::nullopt);
+    health_.add("pose_revisions_replaced");
+  }
   std::lock_guard lock(mutex_);
-  kernel_->revisePoses(revised);
-  revision_ = revision;
+  kernel_->revisePoses(poses, revision.revision);
+  revisions_.pop_front();
   health_.add("pose_revisions");
+}
+
+void RgMappingKernelService::applyFinalPoses() {
+  std::vector<CorrectedPose> poses = posesOfKernelScans(std::nullopt);
+  const std::uint64_t revision = scanMapper_.revision();
+  std::lock_guard lock(mutex_);
+  kernel_->revisePoses(poses, revision);
 }
 
 Pose2D RgMappingKernelService::correctedPoseOf(DataId scan) {
@@ -107,8 +152,7 @@ Pose2D RgMappingKernelService::correctedPoseOf(DataId scan) {
   return scanMapper_.correctedPose(scan);
 }
 
-bool RgMappingKernelService::mapPending() {
-  bool fed = false;
+std::optional<PoseRevisionInfo> RgMappingKernelService::mapPending(bool& fed) {
   const auto feedEventsUpTo = [&](DataId scan) {
     while (!events_.empty() && events_.front().scanId <= scan) {
       const GatewayEvent& e = events_.front();
@@ -121,15 +165,19 @@ bool RgMappingKernelService::mapPending() {
   while (!scans_.empty() && (scans_.front().scan.id <= detectionLastScan_ || eventsEnded_)) {
     const CorrectedScan& s = scans_.front();
     feedEventsUpTo(s.scan.id - 1);
-    kernel_->addScan(s.scan, s.corrected);
+    if (!revisions_.empty() && revisions_.front().atScan <= s.scan.id) return revisions_.front();
+    kernel_->addScan(s.scan, s.mapped);
     health_.add("scans_mapped");
     const DataId id = s.scan.id;
     scans_.pop_front();
     feedEventsUpTo(id);
     fed = true;
   }
-  if (scans_.empty() && scansEnded_ && eventsEnded_) feedEventsUpTo(kernel_->state().lastScanId);
-  return fed;
+  if (scans_.empty() && scansEnded_ && eventsEnded_) {
+    feedEventsUpTo(kernel_->state().lastScanId);
+    if (!revisions_.empty()) return revisions_.front();  // made after the last scan
+  }
+  return std::nullopt;
 }
 
 bool RgMappingKernelService::followOnce() {
@@ -137,17 +185,34 @@ bool RgMappingKernelService::followOnce() {
     std::lock_guard lock(mutex_);
     if (finished_) return false;
   }
+  // Scans before revisions: a revision made while a scan was taken in is known once that scan is.
   const bool scans = fetchScans();
+  const bool revisions = fetchRevisions();
   const bool events = fetchEvents();
+  bool fed = false;
+  for (;;) {
+    std::optional<PoseRevisionInfo> due;
+    {
+      std::lock_guard lock(mutex_);
+      due = mapPending(fed);
+    }
+    if (!due) break;
+    applyRevision(*due);
+    fed = true;
+  }
+  bool ended;
+  {
+    std::lock_guard lock(mutex_);
+    ended = scans_.empty() && events_.empty() && revisions_.empty() && scansEnded_ && eventsEnded_;
+  }
+  if (ended) applyFinalPoses();
   std::lock_guard lock(mutex_);
-  const bool fed = mapPending();
   const RgMapEventId lastEvent = kernel_->state().events.empty() ? 0 : kernel_->state().events.back().id;
-  const bool ended = scans_.empty() && events_.empty() && scansEnded_ && eventsEnded_;
   if (ended) finished_ = true;
   if (ended || lastEvent != checkpointedEvent_ ||
       kernel_->state().lastScanId >= checkpointedScan_ + options_.checkpointScans)
     checkpoint();
-  return scans || events || fed;
+  return scans || revisions || events || fed;
 }
 
 void RgMappingKernelService::checkpoint() {

@@ -1,12 +1,14 @@
 // RgMappingKernelService: the RG Mapping Kernel module's work behind its servant (thesis 5.2):
-// follows the ScanMapper's corrected scans and the GatewayDetection module's events by ID and
-// feeds them to the kernel core in scan order - scan s, then the events scan s caused
-// (GatewayEvent::scanId) - so that the order of its inputs does not depend on the modules'
-// timing. When the ScanMapper revises its poses (a new revision), the kernel gets the new poses
-// of all its scans. Which revision a scan's pose comes from does depend on timing (when the
-// kernel fetched the scan, when it noticed the revision), and so the structure can: replays of
-// Freiburg 079 gave 16 to 18 regions, while every replay of the Intel log so far, also one with
-// 30 kills (rgctl faulttest rgmap), gave the same structure. It checkpoints the map atomically
+// follows the ScanMapper's corrected scans and pose revisions and the GatewayDetection module's
+// events by ID and feeds them to the kernel core in scan order - scan s with its pose as mapped,
+// then the events scan s caused (GatewayEvent::scanId); a revision the ScanMapper made while it
+// took in scan s revises the kernel's scans with that revision's poses just before scan s - and,
+// once the input ended, the ScanMapper's final poses. So the kernel's inputs, and the map, do not
+// depend on the modules' timing: the server set maps a log as the in-process chain does
+// (tests/eval/rooms MappingPipeline), however far the kernel lags. Only if the ScanMapper no
+// longer keeps a revision (SlamConfig graph.keptRevisions) the kernel takes the latest poses
+// instead, and counts it (health "pose_revisions_replaced"; revisions it never learned of:
+// "pose_revisions_not_kept"). It checkpoints the map atomically
 // after every batch that changed its structure and at least every `checkpointScans` scans, and
 // at the end, with the scans' laser data in a journal beside it (`checkpointFile`.scans,
 // RgMapCodec.h): each checkpoint appends the new scans to the journal, then replaces the map.
@@ -15,6 +17,7 @@
 
 #include <deque>
 #include <mutex>
+#include <optional>
 #include <string>
 
 #include "clientlibs/gatewaydetection/GatewayDetectionClient.h"
@@ -66,9 +69,15 @@ class RgMappingKernelService {
  private:
   bool followOnce();          // false when there was nothing new
   bool fetchScans();          // true when scans came
+  bool fetchRevisions();      // true when revisions came
   bool fetchEvents();         // true when events came
-  void reviseIfNeeded(std::uint64_t revision);
-  bool mapPending();          // under lock; true when something was fed
+  // Under lock: feeds scans and events in order up to the next revision to apply, and returns
+  // that one; `fed` becomes true when something was fed.
+  std::optional<PoseRevisionInfo> mapPending(bool& fed);
+  // The poses of the kernel's scans after a revision, or the latest ones (nullopt).
+  std::vector<CorrectedPose> posesOfKernelScans(std::optional<std::uint64_t> revision);
+  void applyRevision(const PoseRevisionInfo& revision);
+  void applyFinalPoses();     // once the input ended: the ScanMapper's final poses
   Pose2D correctedPoseOf(DataId scan);  // under lock
   void checkpoint();          // under lock
 
@@ -79,10 +88,10 @@ class RgMappingKernelService {
   std::mutex mutex_;
   std::unique_ptr<RgMappingKernel> kernel_;
   std::deque<CorrectedScan> scans_;    // fetched, not fed yet
+  std::deque<PoseRevisionInfo> revisions_;  // known, not applied yet
   std::deque<GatewayEvent> events_;    // fetched, not fed yet
   DataId detectionLastScan_ = 0;       // the detector has processed every scan up to this one
   bool scansEnded_ = false, eventsEnded_ = false, finished_ = false;
-  std::uint64_t revision_ = 0;         // of the poses the kernel has
   RgMapEventId checkpointedEvent_ = 0;
   DataId checkpointedScan_ = 0;
   InputFollower follower_;  // last: it stops before the rest goes

@@ -3,15 +3,23 @@
 // structurally consistent (references both ways, a gateway joins at most two regions, neutralised
 // exactly when both sides are the same region, no empty region); on Intel, regions and paths are
 // served, naming and merging work, the exported files exist, and a restart by the operator
-// resumes from the checkpoint with the same map.
+// resumes from the checkpoint with the same map; and a kernel that lags far behind (small
+// fetches) still ends with exactly the state the in-process chain gives (MappingPipeline), on
+// Freiburg 079 with its dozens of pose revisions: the map does not depend on the modules' timing.
 #include <cppunit/extensions/HelperMacros.h>
 
 #include <cstdlib>
 #include <filesystem>
 #include <map>
+#include <memory>
+#include <optional>
 #include <set>
 
 #include "clientlibs/rgmappingkernel/RgMappingKernelClient.h"
+#include "core/gateways/classify/HmmModelFile.h"
+#include "core/logs/OpenLog.h"
+#include "core/rgmap/kernel/RgMapCodec.h"
+#include "tests/eval/rooms/MappingPipeline.h"
 #include "tests/integration/IntegrationHelpers.h"
 
 using namespace rgnav;
@@ -19,18 +27,37 @@ using namespace rgnav::testing;
 
 namespace {
 
-std::vector<ClusterModule> mappingSet(const std::string& log) {
-  const std::string models = std::string(std::getenv("RGNAV_ROOT")) + "/config/gateways/gateway-hmms.txt";
+std::string modelsFile() { return std::string(std::getenv("RGNAV_ROOT")) + "/config/gateways/gateway-hmms.txt"; }
+
+// `kernelFetch`: records the kernel asks from each input per call.
+std::vector<ClusterModule> mappingSet(const std::string& log, const std::string& kernelFetch = "100") {
   return {{"LogPlayback", playbackCommand(log), {"Laser", "Base"}},
           {"ScanMapper", {TestCluster::program("rgnav-scanmapper")}, {"ScanMapper"}, {"LogPlayback"}},
           {"GatewayDetection",
-           {TestCluster::program("rgnav-gatewaydetection"), "--models", models},
+           {TestCluster::program("rgnav-gatewaydetection"), "--models", modelsFile()},
            {"GatewayDetection"},
            {"LogPlayback"}},
           {"RGMappingKernel",
-           {TestCluster::program("rgnav-rgmappingkernel")},
+           {TestCluster::program("rgnav-rgmappingkernel"), "--fetch", kernelFetch},
            {"RGMappingKernel"},
            {"ScanMapper", "GatewayDetection"}}};
+}
+
+// The kernel state of the in-process chain on every scan of `log`, with the modules' default
+// configurations.
+RgMapState inProcessState(const std::string& log) {
+  MappingPipeline pipeline({}, loadHmmModels(modelsFile()));
+  const std::unique_ptr<LogSource> source = openLog(log);
+  while (const std::optional<LogRecord> record = source->next())
+    if (const auto* scan = std::get_if<LaserScan>(&*record)) pipeline.addScan(*scan);
+  pipeline.finish();
+  return pipeline.kernel().state();
+}
+
+// The kernel module's last checkpoint in `cluster`, serialised again.
+std::string checkpointedState(const TestCluster& cluster) {
+  const std::string file = cluster.dir() + "/run/state/RGMappingKernel/rgmap.state";
+  return serializeRgMap(deserializeRgMap(readFile(file), readFile(file + ".scans")));
 }
 
 MapSummaryView waitForEnd(RgMappingKernelClient& kernel) {
@@ -73,6 +100,7 @@ class RgMappingKernelIntegrationTest : public CppUnit::TestFixture {
   CPPUNIT_TEST_SUITE(RgMappingKernelIntegrationTest);
   CPPUNIT_TEST(testIntelMapQueriesExportAndResume);
   CPPUNIT_TEST(testFreiburgMapsAreConsistent);
+  CPPUNIT_TEST(testLaggingKernelMapsAsTheInProcessChain);
   CPPUNIT_TEST_SUITE_END();
 
  public:
@@ -150,6 +178,17 @@ class RgMappingKernelIntegrationTest : public CppUnit::TestFixture {
       CPPUNIT_ASSERT_MESSAGE(log, summary.regions >= 2 && summary.gateways >= 2);
       checkInvariants(kernel.regions(), kernel.gateways());
     }
+  }
+
+  void testLaggingKernelMapsAsTheInProcessChain() {
+    const std::string log = TestCluster::shared("data/laser/corrected/freiburg-079-corrected.log.gz");
+    TestCluster cluster(mappingSet(log, "7"), kFastBackoff);
+    cluster.start();
+    RgMappingKernelClient kernel(cluster.clientSettings());
+    waitForEnd(kernel);
+    const RgMapState expected = inProcessState(log);
+    CPPUNIT_ASSERT(expected.lastPoseRevision > 20);  // many revisions to apply in order
+    CPPUNIT_ASSERT(checkpointedState(cluster) == serializeRgMap(expected));
   }
 };
 

@@ -18,7 +18,7 @@ namespace {
 using nlohmann::json;
 
 constexpr const char* kFormat = "rgnav-rg-map";
-constexpr int kVersion = 3;
+constexpr int kVersion = 4;
 
 [[noreturn]] void damaged(const std::string& what) { throw FormatError("<checkpoint>", 0, what); }
 
@@ -195,6 +195,7 @@ std::string serializeRgMap(const RgMapState& s) {
                   {"nextGatewayId", s.nextGatewayId},
                   {"lastScanId", s.lastScanId},
                   {"lastGatewayEventId", s.lastGatewayEventId},
+                  {"lastPoseRevision", s.lastPoseRevision},
                   {"regions", list(s.regions, [](const auto& r) { return region(r.second); })},
                   {"gateways", list(s.gateways, [](const auto& g) { return gateway(g.second); })},
                   {"scans", list(s.scans, [](const auto& sc) {
@@ -225,6 +226,7 @@ RgMapState deserializeRgMap(const std::string& text, const std::string& journal)
     s.nextGatewayId = j.at("nextGatewayId");
     s.lastScanId = j.at("lastScanId");
     s.lastGatewayEventId = j.at("lastGatewayEventId");
+    s.lastPoseRevision = j.at("lastPoseRevision");
     insertAll(
         j.at("regions"), s.regions, [](const json& r) { return region(r); }, [](const Region& r) { return r.id; },
         "region");

@@ -1,5 +1,5 @@
 // The RG Mapping Kernel's checkpoint: its whole state (RgMapState.h) as two texts.
-//   - The map, versioned JSON ({"format": "rgnav-rg-map", "version": 3, ...}): regions, gateways,
+//   - The map, versioned JSON ({"format": "rgnav-rg-map", "version": 4, ...}): regions, gateways,
 //     events, learned costs, and every stored scan by ID with its corrected pose only.
 //   - The scan journal: one JSON line per stored scan with its laser data, in ID order. A scan's
 //     laser data never change once it is stored, so a checkpoint appends the new scans' lines and
@@ -7,8 +7,9 @@
 //     text holding them all made every checkpoint of a large map cost seconds (lab_b, 19 000
 //     scans: 41 MB, 1.9 s), and the kernel module wrote one after nearly every batch.
 // The RGMappingKernel server writes both after every change and resumes from them (with
-// lastScanId and lastGatewayEventId it knows where to go on in its input streams); a resumed
-// kernel goes on exactly as if it had not stopped, and the same state always gives the same bytes.
+// lastScanId, lastGatewayEventId and lastPoseRevision it knows where to go on in its input
+// streams); a resumed kernel goes on exactly as if it had not stopped, and the same state always
+// gives the same bytes.
 // Numbers: doubles in the shortest form that reads back to the same double; laser ranges in the
 // shortest form that reads back to the same float (at most 9 significant digits instead of 17;
 // centimetre ranges take 4 or 5 characters); non-finite values as "inf", "-inf" and null (NaN).

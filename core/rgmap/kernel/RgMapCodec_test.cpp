@@ -52,12 +52,22 @@ class RgMapCodecTest : public CppUnit::TestFixture {
   CPPUNIT_TEST(resumedRingClosesTheSameLoop);
   CPPUNIT_TEST(rangesOfEveryKindSurvive);
   CPPUNIT_TEST(doorAliasesSurvive);
+  CPPUNIT_TEST(poseRevisionSurvives);
   CPPUNIT_TEST(journalMayHoldMoreButNotLess);
   CPPUNIT_TEST(damagedCheckpointsAreFormatErrors);
   CPPUNIT_TEST(brokenStatesAreReported);
   CPPUNIT_TEST_SUITE_END();
 
  public:
+  void poseRevisionSurvives() {
+    const std::vector<KernelInput> inputs = rgnav::testing::twoRoomTour().inputs();
+    RgMappingKernel kernel = mapped(inputs, inputs.size());
+    std::vector<CorrectedPose> poses;
+    for (const auto& [id, scan] : kernel.state().scans) poses.push_back({id, scan.corrected});
+    kernel.revisePoses(poses, 12);
+    CPPUNIT_ASSERT_EQUAL(std::uint64_t{12}, roundTrip(kernel.state()).lastPoseRevision);
+  }
+
   void resumedKernelEndsIdentically() {
     const std::vector<KernelInput> inputs = rgnav::testing::twoRoomTour().inputs();
     const RgMappingKernel straight = mapped(inputs, inputs.size());
@@ -169,7 +179,7 @@ class RgMapCodecTest : public CppUnit::TestFixture {
     expectFormatError("", journal);
     expectFormatError("[1, 2, 3]", journal);
     expectFormatError(good, "{\"id\": 1}\n");  // a journal line without laser data
-    expectFormatError(replaced(good, "\"version\":3", "\"version\":2"), journal);
+    expectFormatError(replaced(good, "\"version\":4", "\"version\":3"), journal);
     expectFormatError(replaced(good, "\"rgnav-rg-map\"", "\"rgnav-gateway-detection\""), journal);
     expectFormatError(replaced(good, "\"RegionCreated\"", "\"RegionBorn\""), journal);
     expectFormatError(replaced(good, "\"kind\":\"NarrowPassage\"", "\"kind\":\"Staircase\""), journal);

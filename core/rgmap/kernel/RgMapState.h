@@ -105,6 +105,7 @@ struct RgMapState {
   GatewayId nextGatewayId = 1;
   DataId lastScanId = 0;                  // the last scan taken in (inputs resume after it)
   GatewayEventId lastGatewayEventId = 0;  // the last gateway event taken in
+  std::uint64_t lastPoseRevision = 0;     // the last SLAM pose revision applied (revisePoses)
   // The learned costs of the RG Graph (EdgeCostTable.h).
   std::map<EdgeKey, TraversalStats> edgeTraversals;
   std::map<GatewayId, double> doorOffsets;

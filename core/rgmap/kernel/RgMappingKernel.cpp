@@ -309,7 +309,7 @@ void RgMappingKernel::leave(RegionId region, DataId scan) {
   r.finalised = true;
 }
 
-void RgMappingKernel::revisePoses(std::span<const CorrectedPose> poses) {
+void RgMappingKernel::revisePoses(std::span<const CorrectedPose> poses, std::uint64_t revision) {
   std::map<DataId, Pose2D> revised;
   for (const CorrectedPose& p : poses) {
     requireFinite(p.pose, "revised pose of scan " + std::to_string(p.scanId));
@@ -329,6 +329,7 @@ void RgMappingKernel::revisePoses(std::span<const CorrectedPose> poses) {
     changed = changed || !(placed == g.odomToMap);
     g.odomToMap = placed;
   }
+  state_.lastPoseRevision = revision;
   if (changed) emitEvent(state_, K::PosesRevised, 0, 0, 0, state_.lastScanId);
 }
 

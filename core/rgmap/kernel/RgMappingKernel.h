@@ -119,10 +119,10 @@ class RgMappingKernel {
   // a non-finite pose.
   void addGatewayEvent(const GatewayEvent& event, const Pose2D& lastScanCorrected);
 
-  // New corrected poses from SLAM. Poses of scans the kernel does not hold still re-place the
-  // gateways last seen in them. Throws InvalidArgumentError (and changes nothing) for a
-  // non-finite pose.
-  void revisePoses(std::span<const CorrectedPose> poses);
+  // New corrected poses from SLAM, those of pose revision `revision` (state().lastPoseRevision
+  // becomes it). Poses of scans the kernel does not hold still re-place the gateways last seen
+  // in them. Throws InvalidArgumentError (and changes nothing) for a non-finite pose.
+  void revisePoses(std::span<const CorrectedPose> poses, std::uint64_t revision);
 
   // Merges two regions on request; returns the merged region (the lower ID). Throws
   // InvalidArgumentError for an unknown region or a == b.

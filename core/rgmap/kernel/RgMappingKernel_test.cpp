@@ -473,14 +473,15 @@ class RgMappingKernelTest : public CppUnit::TestFixture {
       revised.push_back({scan, p});
     }
     revised.push_back({100000, {}});  // a scan the kernel never had: ignored
-    k.revisePoses(revised);
+    k.revisePoses(revised, 3);
     CPPUNIT_ASSERT_EQUAL(RgMapEventKind::PosesRevised, k.state().events.back().kind);
+    CPPUNIT_ASSERT_EQUAL(std::uint64_t{3}, k.state().lastPoseRevision);
     // The room's frame faces north (it was entered northwards): its north wall is the box's +x end.
     CPPUNIT_ASSERT_DOUBLES_EQUAL(4.0, northWall, 0.05);
     CPPUNIT_ASSERT_DOUBLES_EQUAL(4.5, k.description(kRoom2).boundingBox.max().x(), 0.05);
     CPPUNIT_ASSERT(k.checkConsistency().empty());
     const std::size_t events = k.state().events.size();
-    k.revisePoses(revised);  // nothing new
+    k.revisePoses(revised, 3);  // nothing new
     CPPUNIT_ASSERT_EQUAL(events, k.state().events.size());
   }
 

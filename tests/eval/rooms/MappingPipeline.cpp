@@ -31,7 +31,7 @@ void MappingPipeline::addScanAt(const LaserScan& scan, const Pose2D& corrected) 
 void MappingPipeline::map(const LaserScan& scan) {
   kernel_.addScan(scan, correctedPose(scan.id));
   for (const GatewayEvent& event : detector_.addScan(scan, scan.odometry)) {
-    kernel_.addGatewayEvent(event, correctedPose(event.gateway.lastScan));
+    kernel_.addGatewayEvent(event, kernel_.state().scans.at(event.gateway.lastScan).corrected);
     ++counts_.gatewayEvents;
     counts_.traversals += event.kind == GatewayEventKind::Traversed;
   }
@@ -55,7 +55,7 @@ void MappingPipeline::reviseKernelPoses() {
   std::vector<CorrectedPose> poses;
   poses.reserve(kernel_.state().scans.size());
   for (const auto& [id, stored] : kernel_.state().scans) poses.push_back({id, slam_.correctedPose(id)});
-  kernel_.revisePoses(poses);
+  kernel_.revisePoses(poses, slam_.state().counters.optimizations);
 }
 
 }  // namespace rgnav

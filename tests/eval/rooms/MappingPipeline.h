@@ -5,17 +5,18 @@
 //   2. the kernel stacks the scan with that corrected pose;
 //   3. the GatewayDetector sees the scan with its ODOMETRY pose (as the GatewayDetection module
 //      does: its gateways are in the odometry frame), and each event it causes goes to the kernel
-//      with the corrected pose of the gateway's last scan (the kernel places it with
+//      with the kernel's corrected pose of the gateway's last scan (the kernel places it with
 //      corrected ∘ odometry⁻¹ of that scan).
 // Whenever the ScanMapper optimised its pose graph, the kernel's poses are revised (as the kernel
 // module does when the ScanMapper reports revised poses); finish() closes pending loops and
 // revises them with the final SLAM poses.
 // For measuring what SLAM errors cost, addScanAt gives the corrected pose instead (e.g. the true
 // pose): the ScanMapper is then not used at all.
-// Where it differs from the server set: no CORBA, no checkpoints, and the kernel gets each scan's
-// corrected pose as the ScanMapper has it right after that scan and revisions right after each
-// optimisation (the kernel server follows the ScanMapper with some delay, so it may see slightly
-// later estimates).
+// The kernel gets each scan's corrected pose as the ScanMapper has it right after that scan
+// (ScanRecord::mapped), each revision's poses right after the optimisation, before the scan it
+// was made at, and places events with the pose it holds for the gateway's last scan: the order
+// and the poses the kernel module feeds (RgMappingKernelService.h), so the server set maps a log
+// as this chain does. Where it differs from the server set: no CORBA, no checkpoints.
 #pragma once
 
 #include <map>
