@@ -3,6 +3,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
+#include <utility>
 #include <string>
 
 #include "core/common/Errors.h"
@@ -14,6 +16,7 @@ namespace {
 constexpr int kMaxCellsPerSide = 10000;
 constexpr double kGrowthMarginM = 2.0;  // at least this much room is added when the grid grows
 constexpr double kFarCells = 1e9;       // lattice coordinates beyond this are rejected outright
+constexpr double kInsideBorder = 1e-6;  // cells: beams cut at the window's border end this far inside
 
 void validate(const FreespaceConfig& c) {
   const auto positive = [](double v) { return std::isfinite(v) && v > 0.0; };
@@ -29,15 +32,24 @@ void validate(const FreespaceConfig& c) {
 
 // One axis of a growing window: the span [lo, hi] that covers the current span [cur0, cur1]
 // (none if `empty`) and [needLo, needHi], with `margin` cells added on each side that had to
-// grow, trimmed back to maxCells. Throws if the needed span alone exceeds maxCells.
+// grow, trimmed back to maxCells. Where that cannot be covered in maxCells, the span of maxCells
+// that keeps the current span and [keepLo, keepHi] and reaches as far towards the needed ends as
+// it can (no margin); none if even those do not fit.
 struct Span {
   int lo, hi;
 };
-Span grownSpan(int needLo, int needHi, int cur0, int cur1, bool empty, int margin, int maxCells) {
+std::optional<Span> grownSpan(int needLo, int needHi, int keepLo, int keepHi, int cur0, int cur1, bool empty,
+                              int margin, int maxCells) {
   const int coreLo = empty ? needLo : std::min(needLo, cur0);
   const int coreHi = empty ? needHi : std::max(needHi, cur1);
-  if (coreHi - coreLo + 1 > maxCells)
-    throw InvalidArgumentError("region freespace: the region would grow beyond maxExtentM");
+  if (coreHi - coreLo + 1 > maxCells) {
+    const int fixedLo = empty ? keepLo : std::min(keepLo, cur0), fixedHi = empty ? keepHi : std::max(keepHi, cur1);
+    const int spare = maxCells - (fixedHi - fixedLo + 1);
+    if (spare < 0) return std::nullopt;
+    const int wantLo = fixedLo - coreLo, wantHi = coreHi - fixedHi;
+    const int giveLo = std::min(wantLo, std::max(spare / 2, spare - wantHi));
+    return Span{fixedLo - giveLo, fixedHi + std::min(wantHi, spare - giveLo)};
+  }
   int lo = (empty || needLo < cur0) ? coreLo - margin : coreLo;
   int hi = (empty || needHi > cur1) ? coreHi + margin : coreHi;
   int excess = hi - lo + 1 - maxCells;
@@ -46,7 +58,28 @@ Span grownSpan(int needLo, int needHi, int cur0, int cur1, bool empty, int margi
     hi -= trimHi;
     lo += excess - trimHi;
   }
-  return {lo, hi};
+  return Span{lo, hi};
+}
+
+// Where the segment from `a` to `b` enters and leaves the box [lo, hi] (parameters 0 <= t0 <= t1
+// <= 1 along it; Liang & Barsky 1984); none if it misses the box.
+std::optional<std::pair<double, double>> clipToBox(const Eigen::Vector2d& a, const Eigen::Vector2d& b,
+                                                   const Eigen::Vector2d& lo, const Eigen::Vector2d& hi) {
+  double t0 = 0.0, t1 = 1.0;
+  const Eigen::Vector2d d = b - a;
+  for (int axis = 0; axis < 2; ++axis) {
+    for (const auto& [p, q] : {std::pair{-d[axis], a[axis] - lo[axis]}, std::pair{d[axis], hi[axis] - a[axis]}}) {
+      if (p == 0.0) {
+        if (q < 0.0) return std::nullopt;
+        continue;
+      }
+      const double t = q / p;
+      if (p < 0.0) t0 = std::max(t0, t);
+      else t1 = std::min(t1, t);
+    }
+  }
+  if (t0 > t1) return std::nullopt;
+  return std::pair{t0, t1};
 }
 
 }  // namespace
@@ -70,19 +103,33 @@ void RegionFreespace::addBeams(const RegionBeams& beams) {
     lo = lo.cwiseMin(b.end * perCell);
     hi = hi.cwiseMax(b.end * perCell);
   }
-  ensureCovers(lo, hi);
+  const Eigen::Vector2d origin = beams.origin * perCell;
+  if (!ensureCovers(lo, hi, origin, origin)) {
+    ++scansOutside_;
+    return;
+  }
 
-  // Lattice coordinates relative to the window, so that floor() gives the index into counts_.
+  // Lattice coordinates relative to the window, so that floor() gives the index into counts_;
+  // beams are cut at the window's border (just inside it) where the region outgrew maxExtentM.
   const Eigen::Vector2d shift(window_.col0, window_.row0);
-  const Eigen::Vector2d from = beams.origin * perCell - shift;
+  const Eigen::Vector2d boxLo = Eigen::Vector2d::Constant(kInsideBorder);
+  const Eigen::Vector2d boxHi = Eigen::Vector2d(window_.width, window_.height).array() - kInsideBorder;
+  const Eigen::Vector2d from = origin - shift;
   Counts* cells = counts_.data();
   const std::size_t width = std::size_t(window_.width);
   const auto markFree = [cells, width](int i, int j) { ++cells[std::size_t(j) * width + std::size_t(i)].free; };
   for (const RegionBeam& b : beams.beams) {
-    const Eigen::Vector2d to = b.end * perCell - shift;
+    Eigen::Vector2d to = b.end * perCell - shift;
+    bool cut = false;
+    if ((to.array() < boxLo.array()).any() || (to.array() > boxHi.array()).any()) {
+      const auto inside = clipToBox(from, to, boxLo, boxHi);
+      if (!inside) continue;
+      to = from + inside->second * (to - from);
+      cut = true;
+    }
     const LatticeCell last = traverseCells(from.x(), from.y(), to.x(), to.y(), markFree);
     Counts& end = cells[std::size_t(last.j) * width + std::size_t(last.i)];
-    ++(b.hit ? end.hit : end.free);
+    ++(b.hit && !cut ? end.hit : end.free);
   }
   ++scans_;
 }
@@ -106,13 +153,24 @@ void RegionFreespace::mergeFrom(const RegionFreespace& other, const Pose2D& othe
       lo = lo.cwiseMin(corner);
       hi = hi.cwiseMax(corner);
     }
-  ensureCovers(lo, hi);
+  // The two together may outgrow maxExtentM: this grid then keeps what it holds and takes as
+  // much of the other's as fits (around the other's centre if this one is empty).
+  const Eigen::Vector2d keep = window_.empty() ? Eigen::Vector2d(0.5 * (lo + hi))
+                                              : Eigen::Vector2d(window_.col0 + 0.5 * window_.width,
+                                                                window_.row0 + 0.5 * window_.height);
+  ensureCovers(lo, hi, keep, keep);
   scans_ += other.scans_;
+  scansOutside_ += other.scansOutside_;
 
-  // Every cell of ours under the other grid samples the other cell under its centre.
+  // Every cell of ours under the other grid samples the other cell under its centre (as far as
+  // this grid reaches, where the two together outgrow maxExtentM).
   const Pose2D thisInOther = inverse(otherInThis);
-  for (int j = int(std::floor(lo.y())); j <= int(std::floor(hi.y())); ++j)
-    for (int i = int(std::floor(lo.x())); i <= int(std::floor(hi.x())); ++i) {
+  const int j0 = std::max(int(std::floor(lo.y())), window_.row0);
+  const int j1 = std::min(int(std::floor(hi.y())), window_.row0 + window_.height - 1);
+  const int i0 = std::max(int(std::floor(lo.x())), window_.col0);
+  const int i1 = std::min(int(std::floor(hi.x())), window_.col0 + window_.width - 1);
+  for (int j = j0; j <= j1; ++j)
+    for (int i = i0; i <= i1; ++i) {
       const LatticeCell source = other.cellOf(transformPoint(thisInOther, cellCenter(i, j)));
       if (!w.contains(source.i, source.j)) continue;
       const Counts& add = other.at(source.i, source.j);
@@ -160,28 +218,33 @@ FreespaceCell RegionFreespace::state(const Counts& c) const {
                                                                           : FreespaceCell::Occupied;
 }
 
-void RegionFreespace::ensureCovers(const Eigen::Vector2d& lo, const Eigen::Vector2d& hi) {
+bool RegionFreespace::ensureCovers(const Eigen::Vector2d& lo, const Eigen::Vector2d& hi, const Eigen::Vector2d& keepLo,
+                                   const Eigen::Vector2d& keepHi) {
   if (!lo.allFinite() || !hi.allFinite() || lo.minCoeff() < -kFarCells || hi.maxCoeff() > kFarCells)
     throw InvalidArgumentError("region freespace: beams must be finite and within maxExtentM");
   // One cell more on each side than needed absorbs any rounding of the shifted coordinates.
   const int needI0 = int(std::floor(lo.x())) - 1, needI1 = int(std::floor(hi.x())) + 1;
   const int needJ0 = int(std::floor(lo.y())) - 1, needJ1 = int(std::floor(hi.y())) + 1;
   const CellWindow& w = window_;
-  if (!w.empty() && w.contains(needI0, needJ0) && w.contains(needI1, needJ1)) return;
+  if (!w.empty() && w.contains(needI0, needJ0) && w.contains(needI1, needJ1)) return true;
 
   const int margin = int(std::ceil(kGrowthMarginM / config_.cellSizeM));
   // Growing by half the current size as well keeps the copying linear in the final size.
-  const Span cols = grownSpan(needI0, needI1, w.col0, w.col0 + w.width - 1, w.empty(),
-                              std::max(margin, w.width / 2), maxCells_);
-  const Span rows = grownSpan(needJ0, needJ1, w.row0, w.row0 + w.height - 1, w.empty(),
-                              std::max(margin, w.height / 2), maxCells_);
-  const CellWindow grown{cols.lo, rows.lo, cols.hi - cols.lo + 1, rows.hi - rows.lo + 1};
+  const std::optional<Span> cols =
+      grownSpan(needI0, needI1, int(std::floor(keepLo.x())) - 1, int(std::floor(keepHi.x())) + 1, w.col0,
+                w.col0 + w.width - 1, w.empty(), std::max(margin, w.width / 2), maxCells_);
+  const std::optional<Span> rows =
+      grownSpan(needJ0, needJ1, int(std::floor(keepLo.y())) - 1, int(std::floor(keepHi.y())) + 1, w.row0,
+                w.row0 + w.height - 1, w.empty(), std::max(margin, w.height / 2), maxCells_);
+  if (!cols || !rows) return false;
+  const CellWindow grown{cols->lo, rows->lo, cols->hi - cols->lo + 1, rows->hi - rows->lo + 1};
   std::vector<Counts> counts(std::size_t(grown.width) * std::size_t(grown.height));
   for (int j = w.row0; j < w.row0 + w.height; ++j)
     std::copy_n(&at(w.col0, j), w.width,
                 &counts[std::size_t(j - grown.row0) * std::size_t(grown.width) + std::size_t(w.col0 - grown.col0)]);
   window_ = grown;
   counts_ = std::move(counts);
+  return true;
 }
 
 }  // namespace rgnav

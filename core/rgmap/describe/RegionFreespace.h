@@ -10,7 +10,9 @@
 //     lasting obstacle, while a wall, hit far more often than beams graze its cells, stays);
 //   - occupied: otherwise.
 // The grid grows as scans need it (with a margin, so growth is rare), never beyond maxExtentM per
-// side. The exported map is the 1-bit FreespaceBitmap, cropped to the free cells.
+// side: a region that outgrows it (outdoors, a long stretch with no gateway) keeps the cells it
+// has, beams are cut at the grid's border, and a scan taken beyond it adds nothing (counted).
+// The exported map is the 1-bit FreespaceBitmap, cropped to the free cells.
 // Deliberate difference: the thesis stores only the bit per cell; we keep the two counts while the
 // region is built, because revisited and merged regions (thesis 2.2, 6.1.1) must combine evidence,
 // and completeness needs to tell obstacles from unexplored space.
@@ -56,9 +58,10 @@ class RegionFreespace {
   explicit RegionFreespace(const FreespaceConfig& config = {});
 
   // Adds `scan` taken with the sensor at `sensorPose` (its aligned pose in the region frame);
-  // `gateways` are the region's gateway lines in the region frame. Throws InvalidArgumentError
-  // (and changes nothing) for invalid input (see regionBeams) or if the grid would have to grow
-  // beyond maxExtentM.
+  // `gateways` are the region's gateway lines in the region frame. Beams are cut where the grid
+  // cannot grow further (maxExtentM); a scan whose sensor lies beyond that adds nothing
+  // (scansOutside). Throws InvalidArgumentError (and changes nothing) for invalid input (see
+  // regionBeams).
   void addScan(const LaserScan& scan, const Pose2D& sensorPose, std::span<const GatewaySegment> gateways);
   // The same for beams already clipped to the region (regionBeams with config().noReturnFreeRangeM).
   void addBeams(const RegionBeams& beams);
@@ -66,9 +69,9 @@ class RegionFreespace {
   // Adds the evidence of `other` (another region, or an earlier visit of this one) whose frame
   // has the pose `otherInThis` in this region's frame: every cell of this grid that the other
   // grid covers gets the counts of the other's cell under its centre. With the identity pose and
-  // the same cell size this is exactly the evidence of all scans of both. Throws
-  // InvalidArgumentError for a non-finite pose, for other == *this, or if the grid would grow
-  // beyond maxExtentM.
+  // the same cell size this is exactly the evidence of all scans of both; where both together
+  // outgrow maxExtentM, this grid keeps its cells and takes what fits of the other's. Throws
+  // InvalidArgumentError for a non-finite pose or for other == *this.
   void mergeFrom(const RegionFreespace& other, const Pose2D& otherInThis);
 
   const FreespaceConfig& config() const { return config_; }
@@ -80,6 +83,8 @@ class RegionFreespace {
   LatticeCell cellOf(const Eigen::Vector2d& point) const;
   Eigen::Vector2d cellCenter(int i, int j) const;
   std::size_t scanCount() const { return scans_; }
+  // Scans that added nothing: taken farther than maxExtentM from the region's other evidence.
+  std::size_t scansOutside() const { return scansOutside_; }
 
   // The free cells as a 1-bit map cropped to their bounding box (empty if there is none).
   FreespaceBitmap bitmap() const;
@@ -92,8 +97,12 @@ class RegionFreespace {
 
   FreespaceCell state(const Counts& c) const;
   // Grows the window to cover the lattice box [lo, hi] (cell units, doubles so that far-off
-  // input is rejected before any conversion); throws before changing anything.
-  void ensureCovers(const Eigen::Vector2d& lo, const Eigen::Vector2d& hi);
+  // input is rejected before any conversion; InvalidArgumentError before changing anything).
+  // Where the box does not fit into maxExtentM, the window grows as far as it can towards it
+  // while it keeps its cells and the box [keepLo, keepHi]; false (and nothing changes) if even
+  // those do not fit.
+  bool ensureCovers(const Eigen::Vector2d& lo, const Eigen::Vector2d& hi, const Eigen::Vector2d& keepLo,
+                    const Eigen::Vector2d& keepHi);
   Counts& at(int i, int j) {
     return counts_[std::size_t(j - window_.row0) * std::size_t(window_.width) + std::size_t(i - window_.col0)];
   }
@@ -106,6 +115,7 @@ class RegionFreespace {
   CellWindow window_;
   std::vector<Counts> counts_;  // row-major over the window
   std::size_t scans_ = 0;
+  std::size_t scansOutside_ = 0;
 };
 
 }  // namespace rgnav

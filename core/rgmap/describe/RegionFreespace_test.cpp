@@ -195,6 +195,7 @@ class RegionFreespaceTest : public CppUnit::TestFixture {
     CPPUNIT_ASSERT(double(both) / double(either) > 0.97);
   }
 
+  // A region that outgrows maxExtentM keeps what it has; beams are cut at the border.
   void growsWithinMaxExtent() {
     FreespaceConfig config;
     config.maxExtentM = 20.0;
@@ -210,13 +211,35 @@ class RegionFreespaceTest : public CppUnit::TestFixture {
     CPPUNIT_ASSERT(f.window().width * 0.15 <= 20.0);
     CPPUNIT_ASSERT(f.cell(f.cellOf({1.0, 0.0}).i, 0) == FreespaceCell::Free);  // kept while growing
     CPPUNIT_ASSERT(f.cell(f.cellOf({12.0, 0.0}).i, 0) == FreespaceCell::Occupied);
-    // 25 m away from the first scan does not fit: a typed error, and nothing changes.
+    // A sensor 25 m away from the first scan does not fit with the cells the grid holds: the
+    // scan adds nothing and is counted.
     const auto before = f.bitmap();
     const auto window = f.window();
-    CPPUNIT_ASSERT_THROW(f.addScan(scan, {-13.0, 0.0, 0.0}, {}), rgnav::InvalidArgumentError);
+    f.addScan(scan, {-13.0, 0.0, 0.0}, {});
     CPPUNIT_ASSERT(before == f.bitmap());
     CPPUNIT_ASSERT_EQUAL(window.col0, f.window().col0);
     CPPUNIT_ASSERT_EQUAL(std::size_t(2), f.scanCount());
+    CPPUNIT_ASSERT_EQUAL(std::size_t(1), f.scansOutside());
+    // A sensor that fits, with a beam reaching beyond the largest grid: the grid grows to
+    // maxExtentM, the beam is cut at its border (free up to there, no hit beyond).
+    LaserScan far = scan;
+    far.ranges = {15.0f};
+    f.addScan(far, {-1.0, 0.0, M_PI}, {});
+    CPPUNIT_ASSERT_EQUAL(std::size_t(3), f.scanCount());
+    CPPUNIT_ASSERT(f.window().width * 0.15 <= 20.0 && f.window().width * 0.15 > 19.5);
+    const int border = f.window().col0;
+    CPPUNIT_ASSERT(f.cell(border, 0) == FreespaceCell::Free);
+    CPPUNIT_ASSERT(f.cell(f.cellOf({-4.0, 0.0}).i, 0) == FreespaceCell::Free);
+    CPPUNIT_ASSERT(f.cell(border - 1, 0) == FreespaceCell::Unknown);
+
+    // Merging a region 15 m further along keeps this grid's cells and takes what fits.
+    RegionFreespace other(config);
+    other.addScan(scan, {}, {});
+    const int before1m = f.cellOf({1.0, 0.0}).i;
+    f.mergeFrom(other, {15.0, 0.0, 0.0});
+    CPPUNIT_ASSERT(f.window().width * 0.15 <= 20.0);
+    CPPUNIT_ASSERT(f.cell(before1m, 0) == FreespaceCell::Free);
+    CPPUNIT_ASSERT_EQUAL(std::size_t(4), f.scanCount());
   }
 
   void invalidInputIsTypedError() {
