@@ -1,6 +1,8 @@
 // RgMappingKernelClient calls through the retrying connection (see RgMappingKernelClient.h).
 #include "clientlibs/rgmappingkernel/RgMappingKernelClient.h"
 
+#include <algorithm>
+
 #include "clientlibs/common/convert.h"
 #include "clientlibs/gatewaydetection/convert.h"
 #include "clientlibs/rgmappingkernel/convert.h"
@@ -9,8 +11,20 @@ namespace rgnav {
 
 using Kernel = RGNav::RGMappingKernel_ptr;
 
+namespace {
+
+ClientSettings withExportTimeout(ClientSettings settings) {
+  settings.callTimeout = std::max<std::chrono::milliseconds>(settings.callTimeout,
+                                                             RgMappingKernelClient::kExportCallTimeout);
+  return settings;
+}
+
+}  // namespace
+
 RgMappingKernelClient::RgMappingKernelClient(ClientSettings settings, std::string objectName)
-    : ModuleClientOf(std::move(objectName), settings), consumer_(settings.consumer) {}
+    : ModuleClientOf(objectName, settings),
+      consumer_(settings.consumer),
+      exports_(objectName, withExportTimeout(settings)) {}
 
 MapSummaryView RgMappingKernelClient::summary() {
   return connection_.call("summary", [](Kernel k) { return fromIdl(k->summary()); });
@@ -93,7 +107,7 @@ RgMapEventBatch RgMappingKernelClient::eventsSince(RgMapEventId afterId, std::ui
 }
 
 std::string RgMappingKernelClient::exportMap(const std::string& directory, const std::string& name, bool occupancy) {
-  return connection_.call("exportMap", [&](Kernel k) {
+  return exports_.call("exportMap", [&](Kernel k) {
     CORBA::String_var files = k->exportMap(directory.c_str(), name.c_str(), occupancy);
     return std::string(files.in());
   });

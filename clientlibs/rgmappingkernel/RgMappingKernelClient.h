@@ -2,6 +2,7 @@
 // gateways, the RG graph and paths, names and merges, the map's events by ID, export.
 #pragma once
 
+#include <chrono>
 #include <vector>
 
 #include "RGMappingKernel.hh"
@@ -28,11 +29,15 @@ class RgMappingKernelClient : public ModuleClientOf<RGNav::RGMappingKernel> {
   RgMappingKernel::NamedObject objectByName(const std::string& name);
   RegionId mergeRegions(RegionId a, RegionId b);
   RgMapEventBatch eventsSince(RgMapEventId afterId, std::uint32_t maxCount);
-  // The files written, one per line.
+  // The files written, one per line. Describing and drawing a large map takes long (an outdoor
+  // campus: tens of seconds), so this call waits up to kExportCallTimeout for its answer.
   std::string exportMap(const std::string& directory, const std::string& name, bool occupancy);
+
+  static constexpr std::chrono::minutes kExportCallTimeout{10};
 
  private:
   std::string consumer_;
+  TypedConnection<RGNav::RGMappingKernel> exports_;  // exportMap only, with the long timeout
 };
 
 }  // namespace rgnav
