@@ -33,7 +33,7 @@ std::vector<PoseUpdate> ScanMapperClient::poses(DataId firstId, DataId lastId) {
 
 std::vector<PoseRevisionInfo> ScanMapperClient::revisionsSince(std::uint64_t afterRevision) {
   return connection_.call("revisionsSince", [&](RGNav::ScanMapper_ptr m) {
-    RGNav::PoseRevisionSeq_var revisions = m->revisionsSince(afterRevision);
+    RGNav::PoseRevisionSeq_var revisions = m->revisionsSince(afterRevision, consumer_.c_str());
     return fromIdlSeq<std::vector<PoseRevisionInfo>>(revisions.in(),
                                                      [](const RGNav::PoseRevision& r) { return fromIdl(r); });
   });

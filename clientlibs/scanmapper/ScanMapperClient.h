@@ -18,6 +18,8 @@ class ScanMapperClient : public ModuleClientOf<RGNav::ScanMapper> {
   std::uint64_t revision();
   CorrectedBatch correctedSince(DataId afterId, std::uint32_t maxCount);
   std::vector<PoseUpdate> poses(DataId firstId, DataId lastId);
+  // As the follower named by the settings' consumer, which has durably applied every revision up
+  // to afterRevision (ScanMapper.idl).
   std::vector<PoseRevisionInfo> revisionsSince(std::uint64_t afterRevision);
   // NotAvailableError if the revision is no longer kept (ScanMapper.idl).
   std::vector<PoseUpdate> revisedPoses(std::uint64_t revision, DataId firstId, DataId lastId);

@@ -165,6 +165,10 @@ Pose2D ScanMapper::revisedPose(DataId scanId, std::uint64_t revision) const {
   return rgnav::revisedPose(state_, scanId, revision);
 }
 
+void ScanMapper::forgetRevisionsUpTo(std::uint64_t number) {
+  std::erase_if(state_.revisions, [number](const PoseRevision& r) { return r.number <= number; });
+}
+
 Pose2D ScanMapper::odomToMap(DataId scanId, const Pose2D& odometryPose) const {
   return rgnav::odomToMap(state_, scanId, odometryPose);
 }

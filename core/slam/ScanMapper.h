@@ -52,6 +52,8 @@ class ScanMapper {
   Pose2D mappedPose(DataId scanId) const;
   // Its pose right after a kept revision (CorrectedPoses.h revisedPose).
   Pose2D revisedPose(DataId scanId, std::uint64_t revision) const;
+  // Drops the kept revisions numbered up to `number` (every follower has applied them).
+  void forgetRevisionsUpTo(std::uint64_t number);
   // Map pose of an odometry pose taken near scan `scanId` (nearest held ID; thesis 3.3.5).
   Pose2D odomToMap(DataId scanId, const Pose2D& odometryPose) const;
   // 0 before the first scan.

@@ -105,6 +105,9 @@ class ScanMapperTest : public CppUnit::TestFixture {
     CPPUNIT_ASSERT_EQUAL(std::size_t{2}, state.revisions.size());
     CPPUNIT_ASSERT_EQUAL(state.counters.optimizations, state.revisions.back().number);
     CPPUNIT_ASSERT_THROW(mapper.revisedPose(1, state.counters.optimizations - 2), rgnav::NotAvailableError);
+    mapper.forgetRevisionsUpTo(state.counters.optimizations - 1);
+    CPPUNIT_ASSERT_EQUAL(std::size_t{1}, state.revisions.size());
+    CPPUNIT_ASSERT_EQUAL(state.counters.optimizations, state.revisions.front().number);
   }
   void rejectsRepeatedIdsAndBadConfig() {
     const Run run = rgnav::testing::ringRun();

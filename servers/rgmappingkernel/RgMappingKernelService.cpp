@@ -38,6 +38,7 @@ RgMappingKernelService::RgMappingKernelService(const RgMappingKernelConfig& conf
       follower_(health, "inputs", [this] { return followOnce(); }) {
   checkpointedScan_ = kernel_->state().lastScanId;
   checkpointedEvent_ = kernel_->state().events.empty() ? 0 : kernel_->state().events.back().id;
+  checkpointedRevision_ = kernel_->state().lastPoseRevision;
   // The journal with exactly the checkpoint's scans: what a crash appended ahead of the map goes.
   if (!options_.checkpointFile.empty())
     writeFileAtomically(journalOf(options_.checkpointFile), scanJournalLines(kernel_->state()));
@@ -65,17 +66,24 @@ bool RgMappingKernelService::fetchScans() {
 }
 
 bool RgMappingKernelService::fetchRevisions() {
-  std::uint64_t after;
+  std::uint64_t durable, known;
   {
     std::lock_guard lock(mutex_);
-    after = revisions_.empty() ? kernel_->state().lastPoseRevision : revisions_.back().revision;
+    // What a restart from the checkpoint would have applied: the ScanMapper keeps what is after it.
+    durable = options_.checkpointFile.empty() ? kernel_->state().lastPoseRevision : checkpointedRevision_;
+    known = revisions_.empty() ? kernel_->state().lastPoseRevision : revisions_.back().revision;
   }
-  const std::vector<PoseRevisionInfo> revisions = scanMapper_.revisionsSince(after);
+  const std::vector<PoseRevisionInfo> revisions = scanMapper_.revisionsSince(durable);
   std::lock_guard lock(mutex_);
-  if (!revisions.empty() && revisions.front().revision > after + 1)
-    health_.add("pose_revisions_not_kept", revisions.front().revision - after - 1);
-  for (const PoseRevisionInfo& r : revisions) revisions_.push_back(r);
-  return !revisions.empty();
+  bool any = false;
+  for (const PoseRevisionInfo& r : revisions) {
+    if (r.revision <= known) continue;
+    if (r.revision > known + 1) health_.add("pose_revisions_not_kept", r.revision - known - 1);
+    revisions_.push_back(r);
+    known = r.revision;
+    any = true;
+  }
+  return any;
 }
 
 bool RgMappingKernelService::fetchEvents() {
@@ -223,6 +231,7 @@ void RgMappingKernelService::checkpoint() {
     writeFileAtomically(options_.checkpointFile, serializeRgMap(kernel_->state()));
     checkpointedScan_ = kernel_->state().lastScanId;
     checkpointedEvent_ = kernel_->state().events.empty() ? 0 : kernel_->state().events.back().id;
+    checkpointedRevision_ = kernel_->state().lastPoseRevision;
     health_.clearError("checkpoint");
   } catch (const FileError& e) {
     health_.setError("checkpoint", e.what());

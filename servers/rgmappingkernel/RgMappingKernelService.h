@@ -8,7 +8,8 @@
 // (tests/eval/rooms MappingPipeline), however far the kernel lags. Only if the ScanMapper no
 // longer keeps a revision (SlamConfig graph.keptRevisions) the kernel takes the latest poses
 // instead, and counts it (health "pose_revisions_replaced"; revisions it never learned of:
-// "pose_revisions_not_kept"). It checkpoints the map atomically
+// "pose_revisions_not_kept"). It tells the ScanMapper which revision its last checkpoint holds,
+// so that the ScanMapper keeps only the revisions after it (RevisionFollowers.h). It checkpoints the map atomically
 // after every batch that changed its structure and at least every `checkpointScans` scans, and
 // at the end, with the scans' laser data in a journal beside it (`checkpointFile`.scans,
 // RgMapCodec.h): each checkpoint appends the new scans to the journal, then replaces the map.
@@ -94,6 +95,7 @@ class RgMappingKernelService {
   bool scansEnded_ = false, eventsEnded_ = false, finished_ = false;
   RgMapEventId checkpointedEvent_ = 0;
   DataId checkpointedScan_ = 0;
+  std::uint64_t checkpointedRevision_ = 0;  // the pose revision the last checkpoint holds
   InputFollower follower_;  // last: it stops before the rest goes
 };
 

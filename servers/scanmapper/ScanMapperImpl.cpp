@@ -28,8 +28,8 @@ RGNav::PoseUpdateSeq* ScanMapperImpl::poses(RGNav::DataId firstId, RGNav::DataId
   return new RGNav::PoseUpdateSeq(toIdlSeq<RGNav::PoseUpdateSeq>(updates, [](const PoseUpdate& u) { return toIdl(u); }));
 }
 
-RGNav::PoseRevisionSeq* ScanMapperImpl::revisionsSince(CORBA::ULongLong afterRevision) {
-  const auto revisions = service_.revisionsSince(afterRevision);
+RGNav::PoseRevisionSeq* ScanMapperImpl::revisionsSince(CORBA::ULongLong afterRevision, const char* follower) {
+  const auto revisions = service_.revisionsSince(afterRevision, follower);
   return new RGNav::PoseRevisionSeq(
       toIdlSeq<RGNav::PoseRevisionSeq>(revisions, [](const PoseRevisionInfo& r) { return toIdl(r); }));
 }

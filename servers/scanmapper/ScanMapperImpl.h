@@ -15,7 +15,7 @@ class ScanMapperImpl : public ServiceServant<POA_RGNav::ScanMapper> {
   CORBA::ULongLong revision() override;
   RGNav::CorrectedScanBatch* correctedSince(RGNav::DataId afterId, CORBA::ULong maxCount, const char* consumer) override;
   RGNav::PoseUpdateSeq* poses(RGNav::DataId firstId, RGNav::DataId lastId) override;
-  RGNav::PoseRevisionSeq* revisionsSince(CORBA::ULongLong afterRevision) override;
+  RGNav::PoseRevisionSeq* revisionsSince(CORBA::ULongLong afterRevision, const char* follower) override;
   RGNav::PoseUpdateSeq* revisedPoses(CORBA::ULongLong revision, RGNav::DataId firstId, RGNav::DataId lastId) override;
   RGNav::Pose2D correctedPose(RGNav::DataId scanId) override;
   RGNav::Pose2D odomToMap(RGNav::DataId scanId, const RGNav::Pose2D& odometryPose) override;

@@ -2,6 +2,8 @@
 #include "servers/scanmapper/ScanMapperService.h"
 
 #include <algorithm>
+#include <chrono>
+#include <optional>
 
 #include "clientlibs/common/ClientConnection.h"
 #include "core/common/AtomicFile.h"
@@ -162,8 +164,12 @@ std::vector<PoseUpdate> ScanMapperService::poses(DataId first, DataId last, std:
   return out;
 }
 
-std::vector<PoseRevisionInfo> ScanMapperService::revisionsSince(std::uint64_t afterRevision) {
+std::vector<PoseRevisionInfo> ScanMapperService::revisionsSince(std::uint64_t afterRevision,
+                                                                const std::string& follower) {
+  const double now = std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
   std::lock_guard lock(mutex_);
+  followers_.asked(follower, afterRevision, now);
+  if (const std::optional<std::uint64_t> applied = followers_.appliedByAll(now)) mapper_.forgetRevisionsUpTo(*applied);
   std::vector<PoseRevisionInfo> out;
   for (const PoseRevision& r : mapper_.state().revisions)
     if (r.number > afterRevision) out.push_back({r.number, r.atScan});

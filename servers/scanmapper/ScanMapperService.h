@@ -1,7 +1,7 @@
 // ScanMapperService: the ScanMapper module's work behind its servant (thesis 5.2): follows the
 // Laser module by ID (as consumer "<module>"), feeds every scan to the SLAM core, keeps the
-// scans it served for consumers (with their poses as mapped, and the latest revisions' poses:
-// ScanMapper.idl), and checkpoints the SLAM state atomically at most once per
+// scans it served for consumers (with their poses as mapped, and the poses of the revisions its
+// followers may still need: ScanMapper.idl, RevisionFollowers.h), and checkpoints the SLAM state atomically at most once per
 // checkpointIntervalS (less often as it grows) while mapping and at the end (DESIGN.md "State
 // survives"; CheckpointPacer.h).
 // After a restart it reloads the checkpoint, refills its scan buffer from the Laser module and
@@ -20,6 +20,7 @@
 #include "core/slam/ScanMapper.h"
 #include "servers/common/CheckpointPacer.h"
 #include "servers/common/InputFollower.h"
+#include "servers/scanmapper/RevisionFollowers.h"
 
 namespace rgnav {
 
@@ -48,8 +49,10 @@ class ScanMapperService {
   Pose2D odomToMap(DataId id, const Pose2D& odometryPose);
   // Current poses of scans first..last (at most cap of them).
   std::vector<PoseUpdate> poses(DataId first, DataId last, std::size_t cap);
-  // The kept revisions after `afterRevision`, oldest first.
-  std::vector<PoseRevisionInfo> revisionsSince(std::uint64_t afterRevision);
+  // The kept revisions after `afterRevision`, oldest first; `follower` (empty: anonymous) has
+  // durably applied every revision up to it, and those every active follower is past are
+  // forgotten (RevisionFollowers.h).
+  std::vector<PoseRevisionInfo> revisionsSince(std::uint64_t afterRevision, const std::string& follower);
   // Poses of the scans first..last right after a kept revision (at most cap of them);
   // NotAvailableError for a revision not kept, InvalidArgumentError unless first <= last < its atScan.
   std::vector<PoseUpdate> revisedPoses(std::uint64_t revision, DataId first, DataId last, std::size_t cap);
@@ -69,6 +72,7 @@ class ScanMapperService {
   ModuleHealth& health_;
   std::mutex mutex_;
   ScanMapper mapper_;
+  RevisionFollowers followers_;
   CheckpointPacer pacer_;
   DataBuffer<LaserScan> scans_;
   bool finished_ = false;  // the input ended and the final optimisation ran
