@@ -238,6 +238,7 @@ bool RegionFreespace::ensureCovers(const Eigen::Vector2d& lo, const Eigen::Vecto
                 w.row0 + w.height - 1, w.empty(), std::max(margin, w.height / 2), maxCells_);
   if (!cols || !rows) return false;
   const CellWindow grown{cols->lo, rows->lo, cols->hi - cols->lo + 1, rows->hi - rows->lo + 1};
+  if (grown == w) return true;  // at its largest already: beams get cut, nothing to copy
   std::vector<Counts> counts(std::size_t(grown.width) * std::size_t(grown.height));
   for (int j = w.row0; j < w.row0 + w.height; ++j)
     std::copy_n(&at(w.col0, j), w.width,

@@ -49,6 +49,7 @@ struct CellWindow {
 
   bool empty() const { return width == 0 || height == 0; }
   bool contains(int i, int j) const { return i >= col0 && j >= row0 && i < col0 + width && j < row0 + height; }
+  friend bool operator==(const CellWindow&, const CellWindow&) = default;
 };
 
 class RegionFreespace {
