@@ -123,7 +123,7 @@ std::vector<CorrectedPose> RgMappingKernelService::posesOfKernelScans(std::optio
   return poses;
 }
 
-void RgMappingKernelService::applyRevision(const PoseRevisionInfo& revision) {
+bool RgMappingKernelService::applyRevision(const PoseRevisionInfo& revision) {
   bool replaced;
   {
     std::lock_guard lock(mutex_);
@@ -134,7 +134,9 @@ void RgMappingKernelService::applyRevision(const PoseRevisionInfo& revision) {
     try {
       poses = posesOfKernelScans(revision.revision);
     } catch (const NotAvailableError&) {
-      replaced = true;  // the ScanMapper no longer keeps it: it ran too far ahead
+      // A restarted ScanMapper has not made it again yet: later. Otherwise it no longer keeps it.
+      if (scanMapper_.revision() < revision.revision) return false;
+      replaced = true;
     }
   }
   if (replaced) {
@@ -145,6 +147,7 @@ void RgMappingKernelService::applyRevision(const PoseRevisionInfo& revision) {
   kernel_->revisePoses(poses, revision.revision);
   revisions_.pop_front();
   health_.add("pose_revisions");
+  return true;
 }
 
 void RgMappingKernelService::applyFinalPoses() {
@@ -154,10 +157,12 @@ void RgMappingKernelService::applyFinalPoses() {
   kernel_->revisePoses(poses, revision);
 }
 
-Pose2D RgMappingKernelService::correctedPoseOf(DataId scan) {
+Pose2D RgMappingKernelService::correctedPoseOf(DataId scan) const {
   const auto& stored = kernel_->state().scans;
-  if (const auto found = stored.find(scan); found != stored.end()) return found->second.corrected;
-  return scanMapper_.correctedPose(scan);
+  const auto found = stored.find(scan);
+  if (found == stored.end()) throw NotAvailableError("kernel: a gateway event names scan " + std::to_string(scan) +
+                                                     ", which the kernel does not hold");
+  return found->second.corrected;
 }
 
 std::optional<PoseRevisionInfo> RgMappingKernelService::mapPending(bool& fed) {
@@ -204,8 +209,7 @@ bool RgMappingKernelService::followOnce() {
       std::lock_guard lock(mutex_);
       due = mapPending(fed);
     }
-    if (!due) break;
-    applyRevision(*due);
+    if (!due || !applyRevision(*due)) break;
     fed = true;
   }
   bool ended;

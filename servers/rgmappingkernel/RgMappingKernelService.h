@@ -5,15 +5,17 @@
 // took in scan s revises the kernel's scans with that revision's poses just before scan s - and,
 // once the input ended, the ScanMapper's final poses. So the kernel's inputs, and the map, do not
 // depend on the modules' timing: the server set maps a log as the in-process chain does
-// (tests/eval/rooms MappingPipeline), however far the kernel lags. Only if the ScanMapper no
-// longer keeps a revision (SlamConfig graph.keptRevisions) the kernel takes the latest poses
-// instead, and counts it (health "pose_revisions_replaced"; revisions it never learned of:
-// "pose_revisions_not_kept"). It tells the ScanMapper which revision its last checkpoint holds,
-// so that the ScanMapper keeps only the revisions after it (RevisionFollowers.h). It checkpoints the map atomically
-// after every batch that changed its structure and at least every `checkpointScans` scans, and
-// at the end, with the scans' laser data in a journal beside it (`checkpointFile`.scans,
-// RgMapCodec.h): each checkpoint appends the new scans to the journal, then replaces the map.
-// After a restart it resumes after the last scan and event the checkpoint holds.
+// (tests/eval/rooms MappingPipeline), also across restarts of either module (a revision a
+// restarted ScanMapper has not made again yet is waited for). Only a kernel that lags so far
+// that the ScanMapper no longer keeps a revision (SlamConfig graph.keptRevisions) or a scan (its
+// buffer) maps differently: it takes the latest poses instead and counts it (health
+// "pose_revisions_replaced"; revisions it never learned of: "pose_revisions_not_kept"). It tells
+// the ScanMapper which revision its last checkpoint holds, so that the ScanMapper keeps only the
+// revisions after it (RevisionFollowers.h). It checkpoints the map atomically after every batch
+// that changed its structure and at least every `checkpointScans` scans, and at the end, with the
+// scans' laser data in a journal beside it (`checkpointFile`.scans, RgMapCodec.h): each
+// checkpoint appends the new scans to the journal, then replaces the map. After a restart it
+// resumes after the last scan, event and pose revision the checkpoint holds.
 #pragma once
 
 #include <deque>
@@ -77,9 +79,10 @@ class RgMappingKernelService {
   std::optional<PoseRevisionInfo> mapPending(bool& fed);
   // The poses of the kernel's scans after a revision, or the latest ones (nullopt).
   std::vector<CorrectedPose> posesOfKernelScans(std::optional<std::uint64_t> revision);
-  void applyRevision(const PoseRevisionInfo& revision);
+  // Applies the revision (false: the ScanMapper, restarted, has not made it again yet).
+  bool applyRevision(const PoseRevisionInfo& revision);
   void applyFinalPoses();     // once the input ended: the ScanMapper's final poses
-  Pose2D correctedPoseOf(DataId scan);  // under lock
+  Pose2D correctedPoseOf(DataId scan) const;  // under lock; the kernel's pose of a scan it holds
   void checkpoint();          // under lock
 
   RgMappingKernelServiceOptions options_;

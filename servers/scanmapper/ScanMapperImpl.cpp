@@ -8,6 +8,13 @@
 #include "servers/common/IdlErrors.h"
 
 namespace rgnav {
+namespace {
+
+RGNav::PoseUpdateSeq* newUpdateSeq(const std::vector<PoseUpdate>& updates) {
+  return new RGNav::PoseUpdateSeq(toIdlSeq<RGNav::PoseUpdateSeq>(updates, [](const PoseUpdate& u) { return toIdl(u); }));
+}
+
+}  // namespace
 
 ScanMapperImpl::ScanMapperImpl(ServerRuntime& runtime, ScanMapperService& service, std::uint32_t maxBatch)
     : ServiceServant(runtime), service_(service), maxBatch_(maxBatch) {}
@@ -25,7 +32,7 @@ RGNav::CorrectedScanBatch* ScanMapperImpl::correctedSince(RGNav::DataId afterId,
 
 RGNav::PoseUpdateSeq* ScanMapperImpl::poses(RGNav::DataId firstId, RGNav::DataId lastId) {
   const auto updates = withIdlErrors([&] { return service_.poses(firstId, lastId, maxBatch_ * 20); });
-  return new RGNav::PoseUpdateSeq(toIdlSeq<RGNav::PoseUpdateSeq>(updates, [](const PoseUpdate& u) { return toIdl(u); }));
+  return newUpdateSeq(updates);
 }
 
 RGNav::PoseRevisionSeq* ScanMapperImpl::revisionsSince(CORBA::ULongLong afterRevision, const char* follower) {
@@ -37,7 +44,7 @@ RGNav::PoseRevisionSeq* ScanMapperImpl::revisionsSince(CORBA::ULongLong afterRev
 RGNav::PoseUpdateSeq* ScanMapperImpl::revisedPoses(CORBA::ULongLong revision, RGNav::DataId firstId,
                                                    RGNav::DataId lastId) {
   const auto updates = withIdlErrors([&] { return service_.revisedPoses(revision, firstId, lastId, maxBatch_ * 20); });
-  return new RGNav::PoseUpdateSeq(toIdlSeq<RGNav::PoseUpdateSeq>(updates, [](const PoseUpdate& u) { return toIdl(u); }));
+  return newUpdateSeq(updates);
 }
 
 RGNav::Pose2D ScanMapperImpl::correctedPose(RGNav::DataId scanId) {

@@ -180,6 +180,13 @@ std::vector<PoseUpdate> ScanMapperService::revisedPoses(std::uint64_t revision, 
                                                         std::size_t cap) {
   if (first == 0 || last < first) throw InvalidArgumentError("revisedPoses wants 1 <= firstId <= lastId");
   std::lock_guard lock(mutex_);
+  const auto& revisions = mapper_.state().revisions;
+  const auto kept = std::find_if(revisions.begin(), revisions.end(),
+                                 [revision](const PoseRevision& r) { return r.number == revision; });
+  if (kept == revisions.end()) throw NotAvailableError("revision " + std::to_string(revision) + " is not kept");
+  if (last >= kept->atScan)
+    throw InvalidArgumentError("revision " + std::to_string(revision) + " was made at scan " +
+                               std::to_string(kept->atScan) + ": it revises no scan from there on");
   const auto& scans = mapper_.state().scans;
   auto it = std::lower_bound(scans.begin(), scans.end(), first,
                              [](const ScanRecord& r, DataId value) { return r.id < value; });

@@ -1,9 +1,9 @@
 // ScanMapperService: the ScanMapper module's work behind its servant (thesis 5.2): follows the
 // Laser module by ID (as consumer "<module>"), feeds every scan to the SLAM core, keeps the
 // scans it served for consumers (with their poses as mapped, and the poses of the revisions its
-// followers may still need: ScanMapper.idl, RevisionFollowers.h), and checkpoints the SLAM state atomically at most once per
-// checkpointIntervalS (less often as it grows) while mapping and at the end (DESIGN.md "State
-// survives"; CheckpointPacer.h).
+// followers may still need: ScanMapper.idl, RevisionFollowers.h), and checkpoints the SLAM state
+// atomically at most once per checkpointIntervalS (less often as it grows) while mapping and at
+// the end (DESIGN.md "State survives"; CheckpointPacer.h).
 // After a restart it reloads the checkpoint, refills its scan buffer from the Laser module and
 // goes on after the last scan the checkpoint holds: the mapper continues bit for bit as if it had
 // not stopped, so no scan is lost, and the scans it maps again give the same corrected scans

@@ -9,7 +9,7 @@ RegionEvidence::RegionEvidence(const RegionEvidenceConfig& config)
 void RegionEvidence::addScan(const LaserScan& scan, const Pose2D& sensorPose,
                              std::span<const GatewaySegment> gateways) {
   const RegionBeams beams = regionBeams(scan, sensorPose, gateways, freespace_.config().noReturnFreeRangeM);
-  freespace_.addBeams(beams);  // the only step that can still reject the scan
+  if (!freespace_.addBeams(beams)) return;  // taken beyond the largest freespace grid: left out
   hull_.addBeams(beams);
   sample_.addBeams(beams);
 }

@@ -26,8 +26,9 @@ class RegionEvidence {
   explicit RegionEvidence(const RegionEvidenceConfig& config = {});
 
   // Adds `scan` taken with the sensor at `sensorPose` (its aligned pose in the region frame);
-  // `gateways` are the region's gateway lines in the region frame. Throws InvalidArgumentError
-  // and changes nothing for invalid input (a region that outgrows maxExtentM: RegionFreespace.h).
+  // `gateways` are the region's gateway lines in the region frame. A scan the freespace grid
+  // leaves out (taken beyond its largest extent, RegionFreespace.h) adds nothing at all. Throws
+  // InvalidArgumentError and changes nothing for invalid input.
   void addScan(const LaserScan& scan, const Pose2D& sensorPose, std::span<const GatewaySegment> gateways);
   // Adds everything known about `other`, whose frame has the pose `otherInThis` in this region's
   // frame. Throws InvalidArgumentError and changes nothing as RegionFreespace::mergeFrom does.

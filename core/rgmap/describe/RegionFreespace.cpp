@@ -4,7 +4,6 @@
 #include <algorithm>
 #include <cmath>
 #include <optional>
-#include <utility>
 #include <string>
 
 #include "core/common/Errors.h"
@@ -61,25 +60,17 @@ std::optional<Span> grownSpan(int needLo, int needHi, int keepLo, int keepHi, in
   return Span{lo, hi};
 }
 
-// Where the segment from `a` to `b` enters and leaves the box [lo, hi] (parameters 0 <= t0 <= t1
-// <= 1 along it; Liang & Barsky 1984); none if it misses the box.
-std::optional<std::pair<double, double>> clipToBox(const Eigen::Vector2d& a, const Eigen::Vector2d& b,
-                                                   const Eigen::Vector2d& lo, const Eigen::Vector2d& hi) {
-  double t0 = 0.0, t1 = 1.0;
+// Where the segment from `a`, inside the box [lo, hi], to `b` leaves the box: the parameter t in
+// (0, 1] along it (1 if it stays inside).
+double exitParameter(const Eigen::Vector2d& a, const Eigen::Vector2d& b, const Eigen::Vector2d& lo,
+                     const Eigen::Vector2d& hi) {
+  double t = 1.0;
   const Eigen::Vector2d d = b - a;
   for (int axis = 0; axis < 2; ++axis) {
-    for (const auto& [p, q] : {std::pair{-d[axis], a[axis] - lo[axis]}, std::pair{d[axis], hi[axis] - a[axis]}}) {
-      if (p == 0.0) {
-        if (q < 0.0) return std::nullopt;
-        continue;
-      }
-      const double t = q / p;
-      if (p < 0.0) t0 = std::max(t0, t);
-      else t1 = std::min(t1, t);
-    }
+    if (d[axis] > 0.0) t = std::min(t, (hi[axis] - a[axis]) / d[axis]);
+    if (d[axis] < 0.0) t = std::min(t, (lo[axis] - a[axis]) / d[axis]);
   }
-  if (t0 > t1) return std::nullopt;
-  return std::pair{t0, t1};
+  return t;
 }
 
 }  // namespace
@@ -89,12 +80,12 @@ RegionFreespace::RegionFreespace(const FreespaceConfig& config) : config_(config
   maxCells_ = int(std::floor(config_.maxExtentM / config_.cellSizeM));
 }
 
-void RegionFreespace::addScan(const LaserScan& scan, const Pose2D& sensorPose,
+bool RegionFreespace::addScan(const LaserScan& scan, const Pose2D& sensorPose,
                               std::span<const GatewaySegment> gateways) {
-  addBeams(regionBeams(scan, sensorPose, gateways, config_.noReturnFreeRangeM));
+  return addBeams(regionBeams(scan, sensorPose, gateways, config_.noReturnFreeRangeM));
 }
 
-void RegionFreespace::addBeams(const RegionBeams& beams) {
+bool RegionFreespace::addBeams(const RegionBeams& beams) {
   if (!beams.origin.allFinite()) throw InvalidArgumentError("region freespace: the sensor position must be finite");
   const double perCell = 1.0 / config_.cellSizeM;
   Eigen::Vector2d lo = beams.origin * perCell, hi = lo;
@@ -104,13 +95,11 @@ void RegionFreespace::addBeams(const RegionBeams& beams) {
     hi = hi.cwiseMax(b.end * perCell);
   }
   const Eigen::Vector2d origin = beams.origin * perCell;
-  if (!ensureCovers(lo, hi, origin, origin)) {
-    ++scansOutside_;
-    return;
-  }
+  if (!ensureCovers(lo, hi, origin, origin)) return false;
 
   // Lattice coordinates relative to the window, so that floor() gives the index into counts_;
   // beams are cut at the window's border (just inside it) where the region outgrew maxExtentM.
+  // The window holds the sensor's cell with a cell around it, so every beam starts inside.
   const Eigen::Vector2d shift(window_.col0, window_.row0);
   const Eigen::Vector2d boxLo = Eigen::Vector2d::Constant(kInsideBorder);
   const Eigen::Vector2d boxHi = Eigen::Vector2d(window_.width, window_.height).array() - kInsideBorder;
@@ -120,18 +109,15 @@ void RegionFreespace::addBeams(const RegionBeams& beams) {
   const auto markFree = [cells, width](int i, int j) { ++cells[std::size_t(j) * width + std::size_t(i)].free; };
   for (const RegionBeam& b : beams.beams) {
     Eigen::Vector2d to = b.end * perCell - shift;
-    bool cut = false;
-    if ((to.array() < boxLo.array()).any() || (to.array() > boxHi.array()).any()) {
-      const auto inside = clipToBox(from, to, boxLo, boxHi);
-      if (!inside) continue;
-      to = from + inside->second * (to - from);
-      cut = true;
-    }
+    const double exit = exitParameter(from, to, boxLo, boxHi);
+    const bool cut = exit < 1.0;
+    if (cut) to = from + exit * (to - from);
     const LatticeCell last = traverseCells(from.x(), from.y(), to.x(), to.y(), markFree);
     Counts& end = cells[std::size_t(last.j) * width + std::size_t(last.i)];
     ++(b.hit && !cut ? end.hit : end.free);
   }
   ++scans_;
+  return true;
 }
 
 void RegionFreespace::mergeFrom(const RegionFreespace& other, const Pose2D& otherInThis) {
@@ -160,7 +146,6 @@ void RegionFreespace::mergeFrom(const RegionFreespace& other, const Pose2D& othe
                                                                 window_.row0 + 0.5 * window_.height);
   ensureCovers(lo, hi, keep, keep);
   scans_ += other.scans_;
-  scansOutside_ += other.scansOutside_;
 
   // Every cell of ours under the other grid samples the other cell under its centre (as far as
   // this grid reaches, where the two together outgrow maxExtentM).
@@ -221,7 +206,7 @@ FreespaceCell RegionFreespace::state(const Counts& c) const {
 bool RegionFreespace::ensureCovers(const Eigen::Vector2d& lo, const Eigen::Vector2d& hi, const Eigen::Vector2d& keepLo,
                                    const Eigen::Vector2d& keepHi) {
   if (!lo.allFinite() || !hi.allFinite() || lo.minCoeff() < -kFarCells || hi.maxCoeff() > kFarCells)
-    throw InvalidArgumentError("region freespace: beams must be finite and within maxExtentM");
+    throw InvalidArgumentError("region freespace: beams must be finite and within 1e9 cells");
   // One cell more on each side than needed absorbs any rounding of the shifted coordinates.
   const int needI0 = int(std::floor(lo.x())) - 1, needI1 = int(std::floor(hi.x())) + 1;
   const int needJ0 = int(std::floor(lo.y())) - 1, needJ1 = int(std::floor(hi.y())) + 1;

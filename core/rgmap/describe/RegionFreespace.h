@@ -11,7 +11,7 @@
 //   - occupied: otherwise.
 // The grid grows as scans need it (with a margin, so growth is rare), never beyond maxExtentM per
 // side: a region that outgrows it (outdoors, a long stretch with no gateway) keeps the cells it
-// has, beams are cut at the grid's border, and a scan taken beyond it adds nothing (counted).
+// has, beams are cut at the grid's border, and a scan taken beyond it adds nothing.
 // The exported map is the 1-bit FreespaceBitmap, cropped to the free cells.
 // Deliberate difference: the thesis stores only the bit per cell; we keep the two counts while the
 // region is built, because revisited and merged regions (thesis 2.2, 6.1.1) must combine evidence,
@@ -60,12 +60,11 @@ class RegionFreespace {
 
   // Adds `scan` taken with the sensor at `sensorPose` (its aligned pose in the region frame);
   // `gateways` are the region's gateway lines in the region frame. Beams are cut where the grid
-  // cannot grow further (maxExtentM); a scan whose sensor lies beyond that adds nothing
-  // (scansOutside). Throws InvalidArgumentError (and changes nothing) for invalid input (see
-  // regionBeams).
-  void addScan(const LaserScan& scan, const Pose2D& sensorPose, std::span<const GatewaySegment> gateways);
+  // cannot grow further (maxExtentM); a scan whose sensor lies beyond that adds nothing (false).
+  // Throws InvalidArgumentError (and changes nothing) for invalid input (see regionBeams).
+  bool addScan(const LaserScan& scan, const Pose2D& sensorPose, std::span<const GatewaySegment> gateways);
   // The same for beams already clipped to the region (regionBeams with config().noReturnFreeRangeM).
-  void addBeams(const RegionBeams& beams);
+  bool addBeams(const RegionBeams& beams);
 
   // Adds the evidence of `other` (another region, or an earlier visit of this one) whose frame
   // has the pose `otherInThis` in this region's frame: every cell of this grid that the other
@@ -84,8 +83,6 @@ class RegionFreespace {
   LatticeCell cellOf(const Eigen::Vector2d& point) const;
   Eigen::Vector2d cellCenter(int i, int j) const;
   std::size_t scanCount() const { return scans_; }
-  // Scans that added nothing: taken farther than maxExtentM from the region's other evidence.
-  std::size_t scansOutside() const { return scansOutside_; }
 
   // The free cells as a 1-bit map cropped to their bounding box (empty if there is none).
   FreespaceBitmap bitmap() const;
@@ -116,7 +113,6 @@ class RegionFreespace {
   CellWindow window_;
   std::vector<Counts> counts_;  // row-major over the window
   std::size_t scans_ = 0;
-  std::size_t scansOutside_ = 0;
 };
 
 }  // namespace rgnav

@@ -55,6 +55,7 @@ class RegionFreespaceTest : public CppUnit::TestFixture {
   CPPUNIT_TEST(mergeOfHalvesEqualsWhole);
   CPPUNIT_TEST(mergeAcrossFrames);
   CPPUNIT_TEST(growsWithinMaxExtent);
+  CPPUNIT_TEST(mergeBeyondMaxExtentKeepsWhatFits);
   CPPUNIT_TEST(invalidInputIsTypedError);
   CPPUNIT_TEST_SUITE_END();
 
@@ -215,31 +216,40 @@ class RegionFreespaceTest : public CppUnit::TestFixture {
     // scan adds nothing and is counted.
     const auto before = f.bitmap();
     const auto window = f.window();
-    f.addScan(scan, {-13.0, 0.0, 0.0}, {});
+    CPPUNIT_ASSERT(!f.addScan(scan, {-13.0, 0.0, 0.0}, {}));
     CPPUNIT_ASSERT(before == f.bitmap());
     CPPUNIT_ASSERT_EQUAL(window.col0, f.window().col0);
     CPPUNIT_ASSERT_EQUAL(std::size_t(2), f.scanCount());
-    CPPUNIT_ASSERT_EQUAL(std::size_t(1), f.scansOutside());
     // A sensor that fits, with a beam reaching beyond the largest grid: the grid grows to
     // maxExtentM, the beam is cut at its border (free up to there, no hit beyond).
     LaserScan far = scan;
     far.ranges = {15.0f};
-    f.addScan(far, {-1.0, 0.0, M_PI}, {});
+    CPPUNIT_ASSERT(f.addScan(far, {-1.0, 0.0, M_PI}, {}));
     CPPUNIT_ASSERT_EQUAL(std::size_t(3), f.scanCount());
-    CPPUNIT_ASSERT(f.window().width * 0.15 <= 20.0 && f.window().width * 0.15 > 19.5);
+    CPPUNIT_ASSERT(f.window().width * 0.15 > 19.5);
     const int border = f.window().col0;
-    CPPUNIT_ASSERT(f.cell(border, 0) == FreespaceCell::Free);
-    CPPUNIT_ASSERT(f.cell(f.cellOf({-4.0, 0.0}).i, 0) == FreespaceCell::Free);
-    CPPUNIT_ASSERT(f.cell(border - 1, 0) == FreespaceCell::Unknown);
+    for (int i = border; i < f.cellOf({-1.0, 0.0}).i; ++i)  // the cut beam marks no hit at the border
+      CPPUNIT_ASSERT(f.cell(i, 0) == FreespaceCell::Free);
+  }
 
-    // Merging a region 15 m further along keeps this grid's cells and takes what fits.
-    RegionFreespace other(config);
+  // Merging a region that does not fit beside this one keeps this grid's cells and takes the
+  // part of the other's that fits.
+  void mergeBeyondMaxExtentKeepsWhatFits() {
+    FreespaceConfig config;
+    config.maxExtentM = 20.0;
+    LaserScan scan;
+    scan.angleIncrement = 0.01;
+    scan.maxRange = 30.0;
+    scan.ranges = {2.0f};
+    RegionFreespace mine(config), other(config);
+    mine.addScan(scan, {}, {});
     other.addScan(scan, {}, {});
-    const int before1m = f.cellOf({1.0, 0.0}).i;
-    f.mergeFrom(other, {15.0, 0.0, 0.0});
-    CPPUNIT_ASSERT(f.window().width * 0.15 <= 20.0);
-    CPPUNIT_ASSERT(f.cell(before1m, 0) == FreespaceCell::Free);
-    CPPUNIT_ASSERT_EQUAL(std::size_t(4), f.scanCount());
+    mine.mergeFrom(other, {17.0, 0.0, 0.0});  // together 19 m of beams plus margins: more than fits
+    CPPUNIT_ASSERT(mine.window().width * 0.15 <= 20.0);
+    CPPUNIT_ASSERT(mine.cell(mine.cellOf({1.0, 0.0}).i, 0) == FreespaceCell::Free);
+    CPPUNIT_ASSERT(mine.cell(mine.cellOf({17.2, 0.0}).i, 0) == FreespaceCell::Free);  // taken from the other
+    CPPUNIT_ASSERT(mine.cell(mine.cellOf({18.5, 0.0}).i, 0) == FreespaceCell::Unknown);  // beyond what fits
+    CPPUNIT_ASSERT_EQUAL(std::size_t(2), mine.scanCount());
   }
 
   void invalidInputIsTypedError() {
