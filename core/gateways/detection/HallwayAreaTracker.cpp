@@ -92,6 +92,16 @@ std::optional<std::size_t> HallwayAreaTracker::addSequence(const TrackedSequence
     view = area->views.insert(area->views.end(), HallwayView{entrance, classifier_.priors(), 0});
   view->posterior = bayesUpdate(view->posterior, logLikelihoods);
   ++view->sequences;
+  // A sequence ends when the robot enters the gateway, so an area it makes may already hold the
+  // robot, which came in through the side the sequence saw the gateway from.
+  const Eigen::Vector2d robot(robotPose.x, robotPose.y);
+  if (!area->enteredThrough && inside(area->points, robot)) {
+    std::size_t nearest = 0;
+    for (std::size_t side = 1; side < 4; ++side)
+      if ((sideMidpoint(area->points, side) - entrance).norm() < (sideMidpoint(area->points, nearest) - entrance).norm())
+        nearest = side;
+    area->enteredThrough = nearest;
+  }
   area->lastScan = scanId;
   area->lastRobotPose = robotPose;
   return static_cast<std::size_t>(area - state_.areas.begin());

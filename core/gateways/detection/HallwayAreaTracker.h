@@ -11,7 +11,9 @@
 //   - An area is a gateway while its best class is one of the six gateway classes of figure
 //     4.1; Deadend and the counter-class Hallway are no transitions between regions.
 //   - Traversal (ours; the thesis tracks hallway gateways only until they are entered): the
-//     robot's path enters the square through one side and leaves it through another.
+//     robot's path enters the square through one side and leaves it through another. A sequence
+//     ends as the robot enters, so an area its sequence makes or updates while the robot is
+//     inside takes the side nearest the sequence's entrance as the one the robot came through.
 #pragma once
 
 #include <Eigen/Core>
