@@ -13,7 +13,7 @@ namespace {
 using nlohmann::json;
 
 constexpr const char* kFormat = "rgnav-gateway-detection";
-constexpr int kVersion = 1;
+constexpr int kVersion = 2;
 
 template <class T, class F>
 json list(const std::vector<T>& items, F&& write) {
@@ -95,14 +95,18 @@ TrackedSequence sequence(const json& j) {
 
 json sequences(const HypothesisTrackerState& s) {
   return {{"nextId", s.nextId},
-          {"running", list(s.running, [](const RunningSequence& r) { return json{{"sequence", sequence(r.sequence)}, {"missed", r.missed}}; })},
+          {"running", list(s.running,
+                           [](const RunningSequence& r) {
+                             return json{{"sequence", sequence(r.sequence)}, {"missed", r.missed}, {"coasted", r.coasted}};
+                           })},
           {"finished", list(s.finished, [](const TrackedSequence& f) { return sequence(f); })}};
 }
 HypothesisTrackerState sequences(const json& j) {
   HypothesisTrackerState s;
   s.nextId = j.at("nextId");
   s.running = list<RunningSequence>(j.at("running"), [](const json& r) {
-    return RunningSequence{sequence(r.at("sequence")), r.at("missed").get<std::size_t>()};
+    return RunningSequence{sequence(r.at("sequence")), r.at("missed").get<std::size_t>(),
+                           r.at("coasted").get<std::size_t>()};
   });
   s.finished = list<TrackedSequence>(j.at("finished"), [](const json& f) { return sequence(f); });
   return s;

@@ -129,7 +129,8 @@ void GatewayDetector::detectPassages(const LaserScan& scan, const Pose2D& robotP
 }
 
 void GatewayDetector::detectHallways(const LaserScan& scan, const Pose2D& robotPose, std::vector<GatewayEvent>& out) {
-  sequenceTracker_.update(robotPose, observer_->observe(scan));
+  sequenceTracker_.update(robotPose, observer_->observe(scan),
+                          [&](const GatewayPoints& points) { return observer_->observeAt(points, scan); });
   for (const TrackedSequence& sequence : sequenceTracker_.takeFinished()) {
     const std::optional<std::size_t> area = areaTracker_->addSequence(sequence, scan.id, robotPose);
     if (!area) continue;

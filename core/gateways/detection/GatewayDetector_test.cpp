@@ -2,8 +2,8 @@
 // passage once, then its traversal from the side it was seen from; a robot turning left at a
 // hallway turn reports an L-Turn area (the trained HMMs of config/gateways) and its traversal
 // from the entrance to the left side; a detector resumed from a serialized checkpoint goes on
-// with exactly the events of one that never stopped; scans out of order and damaged
-// checkpoints are typed errors.
+// with exactly the events of one that never stopped, and a checkpoint keeps how far a running
+// hallway sequence has coasted; scans out of order and damaged checkpoints are typed errors.
 #include "core/gateways/detection/GatewayDetector.h"
 
 #include <cppunit/extensions/HelperMacros.h>
@@ -14,6 +14,7 @@
 #include "core/common/Errors.h"
 #include "core/gateways/classify/HmmModelFile.h"
 #include "core/gateways/detection/DetectionStateCodec.h"
+#include "core/gateways/vlm/ObservationVector.h"
 #include "core/gateways/vlm/testing/JunctionScan.h"
 #include "core/lines/testing/SyntheticScan.h"
 
@@ -65,6 +66,7 @@ class GatewayDetectorTest : public CppUnit::TestFixture {
   CPPUNIT_TEST(doorIsReportedOnceThenTraversed);
   CPPUNIT_TEST(leftTurnIsClassifiedAndTraversed);
   CPPUNIT_TEST(resumedDetectorContinuesExactly);
+  CPPUNIT_TEST(checkpointKeepsCoasting);
   CPPUNIT_TEST(scansOutOfOrderAreRejected);
   CPPUNIT_TEST(damagedCheckpointIsAFormatError);
   CPPUNIT_TEST_SUITE_END();
@@ -140,6 +142,27 @@ class GatewayDetectorTest : public CppUnit::TestFixture {
     }
   }
 
+  void checkpointKeepsCoasting() {
+    GatewayDetectorState state;
+    RunningSequence running;
+    running.sequence.id = 7;
+    running.sequence.gatewayPoints = squareGatewayArea(2.0);
+    running.sequence.distances = {3.0, 2.8};
+    running.sequence.observations = {std::vector<double>(kObservationSize, 0.5),
+                                     std::vector<double>(kObservationSize, 0.25)};
+    running.missed = 1;
+    running.coasted = 1;
+    state.sequences.running.push_back(running);
+    const DetectionCheckpoint saved = deserializeDetection(serializeDetection({state, {}}));
+    CPPUNIT_ASSERT_EQUAL(std::size_t(1), saved.detector.sequences.running.size());
+    const RunningSequence& back = saved.detector.sequences.running[0];
+    CPPUNIT_ASSERT_EQUAL(std::uint64_t(7), back.sequence.id);
+    CPPUNIT_ASSERT_EQUAL(std::size_t(1), back.missed);
+    CPPUNIT_ASSERT_EQUAL(std::size_t(1), back.coasted);
+    CPPUNIT_ASSERT(back.sequence.distances == running.sequence.distances);
+    CPPUNIT_ASSERT(back.sequence.observations == running.sequence.observations);
+  }
+
   void scansOutOfOrderAreRejected() {
     GatewayDetector detector({}, std::nullopt);
     detector.addScan(scanAt({}, 5), {});
@@ -153,7 +176,7 @@ class GatewayDetectorTest : public CppUnit::TestFixture {
     CPPUNIT_ASSERT_THROW(deserializeDetection(good.substr(0, good.size() / 2)), FormatError);
     CPPUNIT_ASSERT_THROW(deserializeDetection("{\"format\": \"something else\"}"), FormatError);
     std::string otherVersion = good;
-    otherVersion.replace(otherVersion.find("\"version\":1"), 11, "\"version\":9");
+    otherVersion.replace(otherVersion.find("\"version\":2"), 11, "\"version\":9");
     CPPUNIT_ASSERT_THROW(deserializeDetection(otherVersion), FormatError);
   }
 };

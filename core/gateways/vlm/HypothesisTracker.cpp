@@ -25,7 +25,8 @@ void HypothesisTracker::finish(std::size_t index, SequenceEnd end) {
   state_.running.erase(state_.running.begin() + static_cast<std::ptrdiff_t>(index));
 }
 
-void HypothesisTracker::update(const Pose2D& sensorPose, const std::vector<VlmObservation>& observations) {
+void HypothesisTracker::update(const Pose2D& sensorPose, const std::vector<VlmObservation>& observations,
+                               const KnownVlmObserver& observeKnown) {
   const Eigen::Vector2d robot(sensorPose.x, sensorPose.y);
   std::vector<GatewayPoints> world;
   world.reserve(observations.size());
@@ -55,6 +56,7 @@ void HypothesisTracker::update(const Pose2D& sensorPose, const std::vector<VlmOb
     track.sequence.distances.push_back(observations[h].distanceM);
     track.sequence.observations.push_back(observations[h].observation);
   }
+  if (observeKnown) coast(sensorPose, observeKnown, trackMatched, entered);
   // Finish from the back so that indices stay valid.
   for (std::size_t t = state_.running.size(); t-- > 0;) {
     if (entered[t]) {
@@ -73,6 +75,28 @@ void HypothesisTracker::update(const Pose2D& sensorPose, const std::vector<VlmOb
     track.sequence.distances.push_back(observations[h].distanceM);
     track.sequence.observations.push_back(observations[h].observation);
     state_.running.push_back(std::move(track));
+  }
+}
+
+void HypothesisTracker::coast(const Pose2D& sensorPose, const KnownVlmObserver& observeKnown,
+                              std::vector<bool>& trackMatched, std::vector<bool>& entered) {
+  const Eigen::Vector2d robot(sensorPose.x, sensorPose.y);
+  const Pose2D toSensor = inverse(sensorPose);
+  for (std::size_t t = 0; t < state_.running.size(); ++t) {
+    RunningSequence& track = state_.running[t];
+    const std::size_t detections = track.sequence.observations.size() - track.coasted;
+    if (trackMatched[t] || detections < params_.minDetectionsToCoast || track.coasted >= params_.maxCoastedScans)
+      continue;
+    if (depthPastEntrance(track.sequence.gatewayPoints, robot) > params_.entryDepthM) {
+      entered[t] = true;
+      continue;
+    }
+    const std::optional<VlmObservation> o = observeKnown(transformed(track.sequence.gatewayPoints, toSensor));
+    if (!o) continue;
+    trackMatched[t] = true;
+    ++track.coasted;
+    track.sequence.distances.push_back(o->distanceM);
+    track.sequence.observations.push_back(o->observation);
   }
 }
 

@@ -8,10 +8,20 @@
 // the hidden line, by more than entryDepthM: that observation is not added) or when it is lost.
 // Where we differ: "lost" allows maxMissedScans scans without a match (a person walking through
 // the view should not cut a sequence); the thesis does not say how many.
+// Where we differ (2), coasting: a sequence that no hypothesis of a scan matches, once it has
+// minDetectionsToCoast detections, is observed in that scan at its last gateway points
+// (VlmObserver::observeAt: lines through them), for at most maxCoastedScans scans of its life.
+// Clutter that hides a depth singularity or breaks a wall line for a few scans then neither cuts
+// the sequence nor leaves out the observations close to the gateway, where the hypotheses fail
+// most often. On the simulated hallways (rgctl eval crossings, seed 1, 120 layouts) the lowest
+// class rate in the 2 m cluttered hallways rose from 0.944 to 0.979 (with HMMs retrained on
+// coasted sequences, config/gateways).
 #pragma once
 
 #include <cstddef>
 #include <cstdint>
+#include <functional>
+#include <optional>
 #include <vector>
 
 #include "core/common/Pose2D.h"
@@ -27,6 +37,8 @@ struct TrackerParams {
   double matchToleranceM = 0.5;
   std::size_t maxMissedScans = 2;  // lost after more consecutive scans without a match
   double entryDepthM = 0.1;        // entered: the robot this far past the entrance
+  std::size_t minDetectionsToCoast = 3;  // detections of a sequence before it may coast
+  std::size_t maxCoastedScans = 8;       // coasted observations per sequence at most
 };
 
 enum class SequenceEnd { Entered, Lost, Flushed };
@@ -44,7 +56,8 @@ struct TrackedSequence {
 // Everything a tracker knows, so that a module can checkpoint it and resume exactly.
 struct RunningSequence {
   TrackedSequence sequence;
-  std::size_t missed = 0;  // consecutive scans without a match
+  std::size_t missed = 0;   // scans neither matched nor coasted since the last match
+  std::size_t coasted = 0;  // observations made by coasting, of the whole sequence
 };
 
 struct HypothesisTrackerState {
@@ -60,8 +73,13 @@ class HypothesisTracker {
   // Resumes from a saved state; throws as above.
   HypothesisTracker(const TrackerParams& params, HypothesisTrackerState state);
 
-  // The hypotheses of one scan whose sensor frame is `sensorPose` in the world.
-  void update(const Pose2D& sensorPose, const std::vector<VlmObservation>& observations);
+  // Observes a known VLM, given its gateway points in the sensor frame of the current scan.
+  using KnownVlmObserver = std::function<std::optional<VlmObservation>(const GatewayPoints& inSensorFrame)>;
+
+  // The hypotheses of one scan whose sensor frame is `sensorPose` in the world; sequences they
+  // do not match coast through `observeKnown` where allowed (no coasting when it is empty).
+  void update(const Pose2D& sensorPose, const std::vector<VlmObservation>& observations,
+              const KnownVlmObserver& observeKnown = {});
   // Ends every running sequence (end of the data).
   void flush();
   // The sequences finished since the last call, in the order they finished.
@@ -71,6 +89,8 @@ class HypothesisTracker {
 
  private:
   void finish(std::size_t index, SequenceEnd end);
+  void coast(const Pose2D& sensorPose, const KnownVlmObserver& observeKnown, std::vector<bool>& trackMatched,
+             std::vector<bool>& entered);
 
   TrackerParams params_;
   HypothesisTrackerState state_;

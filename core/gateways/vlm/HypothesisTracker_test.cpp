@@ -1,7 +1,9 @@
 // Tests the tracking of VLM hypotheses into observation sequences (thesis 4.1.2.3): on an
 // approach to a junction the true gateway gives a sequence over the whole approach that starts
 // below the start distance, has decreasing distances and ends when the robot enters the gateway; a hypothesis
-// that is no longer seen is lost after the allowed missed scans; flush ends the rest. (From
+// that is no longer seen is lost after the allowed missed scans, or first coasts (is observed at
+// its last gateway points) for the allowed scans once it has enough detections; flush ends the
+// rest. (From
 // afar the hidden line jumps with the beam that last hits a corner, so short duplicate
 // sequences of the same gateway can occur; the tests look at the longest one.)
 #include <cppunit/extensions/HelperMacros.h>
@@ -28,6 +30,38 @@ void approach(rgnav::HypothesisTracker& tracker, GatewayClass c, double from, do
   }
 }
 
+// The running sequence of the true gateway.
+const rgnav::RunningSequence* runningTrueGateway(const rgnav::HypothesisTracker& tracker) {
+  for (const rgnav::RunningSequence& r : tracker.state().running)
+    if (rgnav::largestPointDistance(r.sequence.gatewayPoints, rgnav::squareGatewayArea(2.0)) < 0.3) return &r;
+  return nullptr;
+}
+
+// A tracker, lost after 2 missed scans, that has followed a T-junction from x = -6 to -4.
+rgnav::HypothesisTracker afterTJunctionApproach(rgnav::TrackerParams params) {
+  params.maxMissedScans = 2;
+  rgnav::HypothesisTracker tracker(params);
+  approach(tracker, GatewayClass::TJunction, -6.0, -4.0);
+  return tracker;
+}
+
+// Scans at x = -3.8, -3.6, ... of the T-junction without hypotheses: only coasting observes.
+class UndetectedScans {
+ public:
+  explicit UndetectedScans(rgnav::HypothesisTracker& tracker) : tracker_(tracker) {}
+  void next() {
+    const rgnav::Pose2D pose{x_, 0.1, 0.0};
+    const rgnav::LaserScan scan = rgnav::testing::junctionScan(GatewayClass::TJunction, 2.0, pose, 0.01, 7);
+    tracker_.update(pose, {}, [&](const rgnav::GatewayPoints& points) { return observer_.observeAt(points, scan); });
+    x_ += 0.2;
+  }
+
+ private:
+  rgnav::HypothesisTracker& tracker_;
+  const rgnav::VlmObserver observer_;
+  double x_ = -3.8;
+};
+
 std::vector<TrackedSequence> ofTrueGateway(const std::vector<TrackedSequence>& all) {
   std::vector<TrackedSequence> out;
   std::copy_if(all.begin(), all.end(), std::back_inserter(out), [](const TrackedSequence& s) {
@@ -45,6 +79,8 @@ class HypothesisTrackerTest : public CppUnit::TestFixture {
   CPPUNIT_TEST_SUITE(HypothesisTrackerTest);
   CPPUNIT_TEST(approachGivesALongDecreasingSequence);
   CPPUNIT_TEST(lostAfterMissedScans);
+  CPPUNIT_TEST(undetectedSequenceCoastsThenIsLost);
+  CPPUNIT_TEST(fewDetectionsDoNotCoast);
   CPPUNIT_TEST(flushEndsRunningSequences);
   CPPUNIT_TEST(badParametersAreRejected);
   CPPUNIT_TEST_SUITE_END();
@@ -92,6 +128,51 @@ class HypothesisTrackerTest : public CppUnit::TestFixture {
     CPPUNIT_ASSERT(!truth.empty());
     CPPUNIT_ASSERT(truth.front().distances.size() >= 14);  // x = -6.0 ... -3.0: 16 scans
     CPPUNIT_ASSERT_EQUAL(std::size_t{0}, tracker.runningCount());
+  }
+
+  void undetectedSequenceCoastsThenIsLost() {
+    rgnav::TrackerParams params;
+    params.maxCoastedScans = 4;
+    rgnav::HypothesisTracker tracker = afterTJunctionApproach(params);
+    const rgnav::RunningSequence* before = runningTrueGateway(tracker);
+    CPPUNIT_ASSERT(before && before->sequence.observations.size() >= params.minDetectionsToCoast);
+    const std::uint64_t id = before->sequence.id;
+    const std::size_t detected = before->sequence.observations.size();
+    const double lastDistance = before->sequence.distances.back();
+    UndetectedScans scans(tracker);
+    for (std::size_t i = 1; i <= params.maxCoastedScans; ++i) {
+      scans.next();
+      const rgnav::RunningSequence* r = runningTrueGateway(tracker);
+      CPPUNIT_ASSERT(r && r->sequence.id == id);
+      CPPUNIT_ASSERT_EQUAL(i, r->coasted);
+      CPPUNIT_ASSERT_EQUAL(detected + i, r->sequence.observations.size());
+      CPPUNIT_ASSERT_EQUAL(r->sequence.observations.size(), r->sequence.distances.size());
+    }
+    const auto& coasted = runningTrueGateway(tracker)->sequence.distances;
+    CPPUNIT_ASSERT(coasted[detected] < lastDistance);
+    for (std::size_t i = detected + 1; i < coasted.size(); ++i) CPPUNIT_ASSERT(coasted[i] < coasted[i - 1]);
+    scans.next();
+    scans.next();
+    CPPUNIT_ASSERT(runningTrueGateway(tracker));
+    scans.next();
+    CPPUNIT_ASSERT(!runningTrueGateway(tracker));
+    const auto lost = ofTrueGateway(tracker.takeFinished());
+    CPPUNIT_ASSERT(!lost.empty() && lost.front().id == id);
+    CPPUNIT_ASSERT(lost.front().end == rgnav::SequenceEnd::Lost);
+    CPPUNIT_ASSERT_EQUAL(detected + params.maxCoastedScans, lost.front().observations.size());
+  }
+
+  void fewDetectionsDoNotCoast() {
+    rgnav::TrackerParams params;
+    params.minDetectionsToCoast = 1000;
+    rgnav::HypothesisTracker tracker = afterTJunctionApproach(params);
+    const std::size_t detected = runningTrueGateway(tracker)->sequence.observations.size();
+    UndetectedScans scans(tracker);
+    for (int i = 0; i < 3; ++i) scans.next();
+    CPPUNIT_ASSERT(!runningTrueGateway(tracker));
+    const auto lost = ofTrueGateway(tracker.takeFinished());
+    CPPUNIT_ASSERT(!lost.empty());
+    CPPUNIT_ASSERT_EQUAL(detected, lost.front().observations.size());
   }
 
   void flushEndsRunningSequences() {

@@ -1,6 +1,8 @@
 // Tests the observation vector of a VLM hypothesis: the class weights first, unchanged, then
 // W_d, W_r, the on-line and the over-line measures per sector (left, front, right); a weight
-// vector of the wrong size is rejected; the observer fills it for every hypothesis.
+// vector of the wrong size is rejected; the observer fills it for every hypothesis; observing a
+// hypothesis again at its own gateway points (VlmObserver::observeAt, the tracker's coasting)
+// gives the same observation, and coinciding points give none.
 #include "core/gateways/vlm/ObservationVector.h"
 
 #include <cppunit/extensions/HelperMacros.h>
@@ -14,6 +16,8 @@ class ObservationVectorTest : public CppUnit::TestFixture {
   CPPUNIT_TEST(weightsThenMeasures);
   CPPUNIT_TEST(rejectsAWrongWeightCount);
   CPPUNIT_TEST(observerFillsTheVector);
+  CPPUNIT_TEST(observingAtTheGatewayPointsRepeatsTheObservation);
+  CPPUNIT_TEST(coincidingGatewayPointsGiveNoObservation);
   CPPUNIT_TEST_SUITE_END();
 
  public:
@@ -43,6 +47,33 @@ class ObservationVectorTest : public CppUnit::TestFixture {
       CPPUNIT_ASSERT(o.observation ==
                      rgnav::observationVector(o.weights, o.distanceMeasure, o.rectangularityMeasure, o.freespace));
     }
+  }
+
+  // The lines of a detected hypothesis run through its gateway points, so the lines observeAt
+  // draws through them are the same lines (up to rounding), and so are all measures.
+  void observingAtTheGatewayPointsRepeatsTheObservation() {
+    const rgnav::Pose2D pose{-3.0, 0.2, 0.05};
+    const rgnav::VlmObserver observer;
+    const rgnav::LaserScan scan = rgnav::testing::junctionScan(rgnav::GatewayClass::LTJunction, 2.0, pose, 0.01, 5);
+    const auto observations = observer.observe(scan);
+    CPPUNIT_ASSERT(!observations.empty());
+    for (const rgnav::VlmObservation& o : observations) {
+      const auto again = observer.observeAt(o.hypothesis.gatewayPoints, scan);
+      CPPUNIT_ASSERT(again);
+      CPPUNIT_ASSERT_DOUBLES_EQUAL(o.distanceM, again->distanceM, 1e-12);
+      CPPUNIT_ASSERT_EQUAL(o.observation.size(), again->observation.size());
+      for (std::size_t i = 0; i < o.observation.size(); ++i)
+        CPPUNIT_ASSERT_DOUBLES_EQUAL(o.observation[i], again->observation[i], 1e-6);
+    }
+  }
+
+  void coincidingGatewayPointsGiveNoObservation() {
+    const rgnav::VlmObserver observer;
+    const rgnav::LaserScan scan = rgnav::testing::junctionScan(rgnav::GatewayClass::TJunction, 2.0, {-3.0, 0.0, 0.0});
+    rgnav::GatewayPoints points = rgnav::squareGatewayArea(2.0);
+    CPPUNIT_ASSERT(observer.observeAt(points, scan));
+    points[rgnav::kFrontLeft] = points[rgnav::kHiddenLeft];
+    CPPUNIT_ASSERT(!observer.observeAt(points, scan));
   }
 };
 

@@ -2,9 +2,11 @@
 // (core/lines LineExtractor), virtual lines, depth singularities, VLM hypotheses, and per
 // hypothesis the general measures W_d and W_r, the freespace measures per sector, the
 // weights W(GW, VLM) per gateway class and the observation vector (ObservationVector.h).
-// Everything in the sensor frame of the scan.
+// Everything in the sensor frame of the scan. observeAt measures a hypothesis known from earlier
+// scans (the tracker's coasting, HypothesisTracker.h) in a scan that did not re-detect it.
 #pragma once
 
+#include <optional>
 #include <vector>
 
 #include "core/common/SensorData.h"
@@ -42,10 +44,17 @@ class VlmObserver {
   explicit VlmObserver(const VlmObserverParams& params = {});
 
   std::vector<VlmObservation> observe(const LaserScan& scan) const;
+  // The observation of the VLM whose gateway points (in the scan's sensor frame) are `points`:
+  // its four lines run through the points (left and right from the hidden to the front points,
+  // front and hidden from right to left), as those of a detected hypothesis do. None when two
+  // points coincide.
+  std::optional<VlmObservation> observeAt(const GatewayPoints& points, const LaserScan& scan) const;
 
   const VlmObserverParams& params() const { return params_; }
 
  private:
+  VlmObservation measured(const VlmHypothesis& hypothesis, const LaserScan& scan) const;
+
   VlmObserverParams params_;
   LineExtractor extractor_;
 };

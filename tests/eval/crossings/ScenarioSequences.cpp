@@ -24,7 +24,8 @@ ScenarioSequences scenarioSequences(const ScenarioSpec& spec, const CrossingsSet
     for (const LabelledPose& labelled : approach.poses) {
       const Pose2D pose = compose(gateway, labelled.pose);
       const LaserScan scan = laser.simulate(pose, pose, 0, 0.0, raycaster, rng);
-      tracker.update(scan.sensorPose, observer.observe(scan));
+      tracker.update(scan.sensorPose, observer.observe(scan),
+                     [&](const GatewayPoints& points) { return observer.observeAt(points, scan); });
     }
     tracker.flush();
     for (LabelledTrack& t : labelApproach(tracker.takeFinished(), spec.gatewayClass, spec.environment.width,

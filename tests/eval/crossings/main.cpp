@@ -22,7 +22,11 @@
 // environments together (the thesis trained per environment and found that hard across
 // environments), the HMMs read the whole observation vector, class weights and measures
 // (core/gateways/vlm ObservationVector.h), and the multi-class confusion matrix is printed,
-// which the thesis could not.
+// which the thesis could not. And 120 clutter layouts per environment and class by default,
+// about 100 000 sequences where the thesis had 20 000: with 30 layouts a class's rate rested on
+// 15 test layouts, and the headline figure's 90 % interval was about 20 points wide; the HMMs
+// trained on more layouts are also better (seed 1, before the tracker coasted: 0.910 with 30
+// layouts, 0.944 with 120, 0.952 with 240).
 #include <chrono>
 #include <cstdio>
 #include <iostream>
@@ -54,7 +58,7 @@ std::size_t countOf(const ClassSequences& sequences) {
 
 int main(int argc, char** argv) {
   std::uint64_t seed = 1;
-  int layouts = 30;
+  int layouts = 120;
   int threads = 2;
   std::string saveModels;
   po::options_description desc("rgnav-eval-crossings [options]");
