@@ -56,7 +56,7 @@ void HypothesisTracker::update(const Pose2D& sensorPose, const std::vector<VlmOb
     track.sequence.distances.push_back(observations[h].distanceM);
     track.sequence.observations.push_back(observations[h].observation);
   }
-  if (observeKnown) coast(sensorPose, observeKnown, trackMatched, entered);
+  followUnmatched(robot, inverse(sensorPose), observeKnown, trackMatched, entered);
   // Finish from the back so that indices stay valid.
   for (std::size_t t = state_.running.size(); t-- > 0;) {
     if (entered[t]) {
@@ -78,19 +78,20 @@ void HypothesisTracker::update(const Pose2D& sensorPose, const std::vector<VlmOb
   }
 }
 
-void HypothesisTracker::coast(const Pose2D& sensorPose, const KnownVlmObserver& observeKnown,
-                              std::vector<bool>& trackMatched, std::vector<bool>& entered) {
-  const Eigen::Vector2d robot(sensorPose.x, sensorPose.y);
-  const Pose2D toSensor = inverse(sensorPose);
+void HypothesisTracker::followUnmatched(const Eigen::Vector2d& robot, const Pose2D& toSensor,
+                                        const KnownVlmObserver& observeKnown, std::vector<bool>& trackMatched,
+                                        std::vector<bool>& entered) {
   for (std::size_t t = 0; t < state_.running.size(); ++t) {
     RunningSequence& track = state_.running[t];
-    const std::size_t detections = track.sequence.observations.size() - track.coasted;
-    if (trackMatched[t] || detections < params_.minDetectionsToCoast || track.coasted >= params_.maxCoastedScans)
-      continue;
+    if (trackMatched[t]) continue;
     if (depthPastEntrance(track.sequence.gatewayPoints, robot) > params_.entryDepthM) {
       entered[t] = true;
       continue;
     }
+    const std::size_t detections = track.sequence.observations.size() - track.coasted;
+    if (!observeKnown || detections < params_.minDetectionsToCoast || track.coasted >= params_.maxCoastedScans ||
+        (gatewayCentre(track.sequence.gatewayPoints) - robot).norm() > params_.startDistanceM)
+      continue;
     const std::optional<VlmObservation> o = observeKnown(transformed(track.sequence.gatewayPoints, toSensor));
     if (!o) continue;
     trackMatched[t] = true;

@@ -2,13 +2,16 @@
 // approach to a junction the true gateway gives a sequence over the whole approach that starts
 // below the start distance, has decreasing distances and ends when the robot enters the gateway; a hypothesis
 // that is no longer seen is lost after the allowed missed scans, or first coasts (is observed at
-// its last gateway points) for the allowed scans once it has enough detections; flush ends the
-// rest. (From
+// its last gateway points) for the allowed scans once it has enough detections, but only while
+// the gateway is in the scan's view and within the start distance; a sequence the robot has
+// entered ends as entered even without a hypothesis; flush ends the rest. (From
 // afar the hidden line jumps with the beam that last hits a corner, so short duplicate
 // sequences of the same gateway can occur; the tests look at the longest one.)
 #include <cppunit/extensions/HelperMacros.h>
 
 #include <algorithm>
+#include <cmath>
+#include <utility>
 
 #include "core/common/Errors.h"
 #include "core/gateways/vlm/HypothesisTracker.h"
@@ -45,12 +48,14 @@ rgnav::HypothesisTracker afterTJunctionApproach(rgnav::TrackerParams params) {
   return tracker;
 }
 
-// Scans at x = -3.8, -3.6, ... of the T-junction without hypotheses: only coasting observes.
+// Scans at x = -3.8, -3.6, ... (or from `x`, heading `heading`) of the T-junction without
+// hypotheses: only coasting observes.
 class UndetectedScans {
  public:
-  explicit UndetectedScans(rgnav::HypothesisTracker& tracker) : tracker_(tracker) {}
+  explicit UndetectedScans(rgnav::HypothesisTracker& tracker, double x = -3.8, double heading = 0.0)
+      : tracker_(tracker), x_(x), heading_(heading) {}
   void next() {
-    const rgnav::Pose2D pose{x_, 0.1, 0.0};
+    const rgnav::Pose2D pose{x_, 0.1, heading_};
     const rgnav::LaserScan scan = rgnav::testing::junctionScan(GatewayClass::TJunction, 2.0, pose, 0.01, 7);
     tracker_.update(pose, {}, [&](const rgnav::GatewayPoints& points) { return observer_.observeAt(points, scan); });
     x_ += 0.2;
@@ -59,7 +64,8 @@ class UndetectedScans {
  private:
   rgnav::HypothesisTracker& tracker_;
   const rgnav::VlmObserver observer_;
-  double x_ = -3.8;
+  double x_;
+  double heading_;
 };
 
 std::vector<TrackedSequence> ofTrueGateway(const std::vector<TrackedSequence>& all) {
@@ -81,6 +87,8 @@ class HypothesisTrackerTest : public CppUnit::TestFixture {
   CPPUNIT_TEST(lostAfterMissedScans);
   CPPUNIT_TEST(undetectedSequenceCoastsThenIsLost);
   CPPUNIT_TEST(fewDetectionsDoNotCoast);
+  CPPUNIT_TEST(noCoastingOutOfViewOrBeyondStartDistance);
+  CPPUNIT_TEST(unmatchedPastTheEntranceIsEntered);
   CPPUNIT_TEST(flushEndsRunningSequences);
   CPPUNIT_TEST(badParametersAreRejected);
   CPPUNIT_TEST_SUITE_END();
@@ -173,6 +181,35 @@ class HypothesisTrackerTest : public CppUnit::TestFixture {
     const auto lost = ofTrueGateway(tracker.takeFinished());
     CPPUNIT_ASSERT(!lost.empty());
     CPPUNIT_ASSERT_EQUAL(detected, lost.front().observations.size());
+  }
+
+  // Turned away from the junction, the scan cannot see it; 8 m back, it is beyond the start
+  // distance. Either way the sequence is lost with its detections only.
+  void noCoastingOutOfViewOrBeyondStartDistance() {
+    for (const auto& [x, heading] : {std::pair{-3.8, M_PI}, std::pair{-8.0, 0.0}}) {
+      rgnav::HypothesisTracker tracker = afterTJunctionApproach({});
+      const std::size_t detected = runningTrueGateway(tracker)->sequence.observations.size();
+      UndetectedScans scans(tracker, x, heading);
+      for (int i = 0; i < 3; ++i) scans.next();
+      CPPUNIT_ASSERT(!runningTrueGateway(tracker));
+      const auto lost = ofTrueGateway(tracker.takeFinished());
+      CPPUNIT_ASSERT(!lost.empty());
+      CPPUNIT_ASSERT_EQUAL(detected, lost.front().observations.size());
+    }
+  }
+
+  // A sequence that may not coast still ends as entered when the robot is past its entrance,
+  // in the first scan, without any hypothesis.
+  void unmatchedPastTheEntranceIsEntered() {
+    rgnav::TrackerParams params;
+    params.minDetectionsToCoast = 1000;
+    rgnav::HypothesisTracker tracker = afterTJunctionApproach(params);
+    const std::uint64_t id = runningTrueGateway(tracker)->sequence.id;
+    tracker.takeFinished();
+    tracker.update({0.0, 0.1, 0.0}, {});
+    const auto finished = ofTrueGateway(tracker.takeFinished());
+    CPPUNIT_ASSERT(!finished.empty() && finished.front().id == id);
+    CPPUNIT_ASSERT(finished.front().end == rgnav::SequenceEnd::Entered);
   }
 
   void flushEndsRunningSequences() {

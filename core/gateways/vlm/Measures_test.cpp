@@ -26,13 +26,11 @@ GatewayPoints inSensorFrame(const GatewayPoints& world) {
   return rgnav::transformed(world, rgnav::inverse(kPose));
 }
 
-rgnav::PlanarLine through(const Eigen::Vector2d& a, const Eigen::Vector2d& b) { return {a, (b - a).normalized()}; }
-
 // The VLM whose gateway points are `g` (sensor frame).
 rgnav::VlmHypothesis vlmOf(const GatewayPoints& g) {
   using namespace rgnav;
-  return {through(g[kHiddenLeft], g[kFrontLeft]), through(g[kHiddenRight], g[kFrontRight]),
-          through(g[kFrontRight], g[kFrontLeft]), through(g[kHiddenRight], g[kHiddenLeft]),
+  return {*lineThrough(g[kHiddenLeft], g[kFrontLeft]), *lineThrough(g[kHiddenRight], g[kFrontRight]),
+          *lineThrough(g[kFrontRight], g[kFrontLeft]), *lineThrough(g[kHiddenRight], g[kHiddenLeft]),
           HiddenLineSource::HallwayWidth, g};
 }
 

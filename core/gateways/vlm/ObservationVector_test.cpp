@@ -2,10 +2,12 @@
 // W_d, W_r, the on-line and the over-line measures per sector (left, front, right); a weight
 // vector of the wrong size is rejected; the observer fills it for every hypothesis; observing a
 // hypothesis again at its own gateway points (VlmObserver::observeAt, the tracker's coasting)
-// gives the same observation, and coinciding points give none.
+// gives the same observation, and coinciding points or a VLM out of the scan's view give none.
 #include "core/gateways/vlm/ObservationVector.h"
 
 #include <cppunit/extensions/HelperMacros.h>
+
+#include <cmath>
 
 #include "core/common/Errors.h"
 #include "core/gateways/vlm/VlmObserver.h"
@@ -18,6 +20,7 @@ class ObservationVectorTest : public CppUnit::TestFixture {
   CPPUNIT_TEST(observerFillsTheVector);
   CPPUNIT_TEST(observingAtTheGatewayPointsRepeatsTheObservation);
   CPPUNIT_TEST(coincidingGatewayPointsGiveNoObservation);
+  CPPUNIT_TEST(aVlmOutOfViewGivesNoObservation);
   CPPUNIT_TEST_SUITE_END();
 
  public:
@@ -70,10 +73,22 @@ class ObservationVectorTest : public CppUnit::TestFixture {
   void coincidingGatewayPointsGiveNoObservation() {
     const rgnav::VlmObserver observer;
     const rgnav::LaserScan scan = rgnav::testing::junctionScan(rgnav::GatewayClass::TJunction, 2.0, {-3.0, 0.0, 0.0});
-    rgnav::GatewayPoints points = rgnav::squareGatewayArea(2.0);
+    rgnav::GatewayPoints points = rgnav::transformed(rgnav::squareGatewayArea(2.0), rgnav::Pose2D{3.0, 0.0, 0.0});
     CPPUNIT_ASSERT(observer.observeAt(points, scan));
     points[rgnav::kFrontLeft] = points[rgnav::kHiddenLeft];
     CPPUNIT_ASSERT(!observer.observeAt(points, scan));
+  }
+
+  // Coasting must not invent observations of a VLM the scan cannot see: behind the sensor (out
+  // of the field of view), beyond the maximum range, or straddling the edge of the view.
+  void aVlmOutOfViewGivesNoObservation() {
+    const rgnav::VlmObserver observer;
+    const rgnav::LaserScan scan = rgnav::testing::junctionScan(rgnav::GatewayClass::TJunction, 2.0, {-3.0, 0.0, 0.0});
+    const rgnav::GatewayPoints ahead = rgnav::transformed(rgnav::squareGatewayArea(2.0), rgnav::Pose2D{3.0, 0.0, 0.0});
+    CPPUNIT_ASSERT(observer.observeAt(ahead, scan));
+    CPPUNIT_ASSERT(!observer.observeAt(rgnav::transformed(ahead, rgnav::Pose2D{0.0, 0.0, M_PI}), scan));
+    CPPUNIT_ASSERT(!observer.observeAt(rgnav::transformed(ahead, rgnav::Pose2D{0.0, 0.0, M_PI / 2}), scan));
+    CPPUNIT_ASSERT(!observer.observeAt(rgnav::transformed(ahead, rgnav::Pose2D{scan.maxRange, 0.0, 0.0}), scan));
   }
 };
 

@@ -10,6 +10,12 @@ double cross(const Eigen::Vector2d& a, const Eigen::Vector2d& b) { return a.x() 
 
 }  // namespace
 
+std::optional<PlanarLine> lineThrough(const Eigen::Vector2d& from, const Eigen::Vector2d& to) {
+  const Eigen::Vector2d d = to - from;
+  if (!(d.norm() > 1e-6)) return std::nullopt;
+  return PlanarLine{from, d.normalized()};
+}
+
 std::optional<Eigen::Vector2d> intersect(const PlanarLine& a, const PlanarLine& b, double minSine) {
   const double den = cross(a.direction, b.direction);
   if (std::fabs(den) < minSine) return std::nullopt;

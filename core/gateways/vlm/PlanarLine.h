@@ -23,6 +23,9 @@ struct PlanarLine {
   PlanarLine parallelThrough(const Eigen::Vector2d& p) const { return {p, direction}; }
 };
 
+// The line from `from` through `to`, directed that way; none if the points coincide (1 µm).
+std::optional<PlanarLine> lineThrough(const Eigen::Vector2d& from, const Eigen::Vector2d& to);
+
 // The intersection of a and b; none if they are parallel within `minSine` (sine of the angle).
 std::optional<Eigen::Vector2d> intersect(const PlanarLine& a, const PlanarLine& b, double minSine = 1e-6);
 

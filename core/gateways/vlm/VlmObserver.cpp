@@ -1,6 +1,9 @@
 // The per-scan pipeline from ranges to observation vectors; see VlmObserver.h.
 #include "core/gateways/vlm/VlmObserver.h"
 
+#include <algorithm>
+#include <cmath>
+
 #include "core/common/Errors.h"
 #include "core/gateways/vlm/DepthSingularities.h"
 #include "core/gateways/vlm/ModelMeasures.h"
@@ -25,15 +28,17 @@ std::vector<VlmObservation> VlmObserver::observe(const LaserScan& scan) const {
 }
 
 std::optional<VlmObservation> VlmObserver::observeAt(const GatewayPoints& points, const LaserScan& scan) const {
-  const auto through = [](const Eigen::Vector2d& from, const Eigen::Vector2d& to) -> std::optional<PlanarLine> {
-    const Eigen::Vector2d d = to - from;
-    if (!(d.norm() > 1e-6)) return std::nullopt;
-    return PlanarLine{from, d.normalized()};
-  };
-  const auto left = through(points[kHiddenLeft], points[kFrontLeft]);
-  const auto right = through(points[kHiddenRight], points[kFrontRight]);
-  const auto front = through(points[kFrontRight], points[kFrontLeft]);
-  const auto hidden = through(points[kHiddenRight], points[kHiddenLeft]);
+  if (scan.ranges.empty()) return std::nullopt;
+  const double lastBearing = scan.startAngle + scan.angleIncrement * static_cast<double>(scan.ranges.size() - 1);
+  const double lowBearing = std::min(scan.startAngle, lastBearing), highBearing = std::max(scan.startAngle, lastBearing);
+  for (const Eigen::Vector2d& p : points) {
+    const double bearing = std::atan2(p.y(), p.x());
+    if (p.norm() > scan.maxRange || bearing < lowBearing || bearing > highBearing) return std::nullopt;
+  }
+  const auto left = lineThrough(points[kHiddenLeft], points[kFrontLeft]);
+  const auto right = lineThrough(points[kHiddenRight], points[kFrontRight]);
+  const auto front = lineThrough(points[kFrontRight], points[kFrontLeft]);
+  const auto hidden = lineThrough(points[kHiddenRight], points[kHiddenLeft]);
   if (!left || !right || !front || !hidden) return std::nullopt;
   VlmHypothesis h;
   h.left = *left;
@@ -41,7 +46,10 @@ std::optional<VlmObservation> VlmObserver::observeAt(const GatewayPoints& points
   h.front = *front;
   h.hidden = *hidden;
   h.gatewayPoints = points;
-  return measured(h, scan);
+  VlmObservation o = measured(h, scan);
+  for (const std::size_t beams : o.freespace.beams)
+    if (beams == 0) return std::nullopt;
+  return o;
 }
 
 VlmObservation VlmObserver::measured(const VlmHypothesis& h, const LaserScan& scan) const {

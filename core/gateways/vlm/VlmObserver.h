@@ -47,7 +47,8 @@ class VlmObserver {
   // The observation of the VLM whose gateway points (in the scan's sensor frame) are `points`:
   // its four lines run through the points (left and right from the hidden to the front points,
   // front and hidden from right to left), as those of a detected hypothesis do. None when two
-  // points coincide.
+  // points coincide, when a point lies outside the scan's field of view or beyond its maximum
+  // range, or when a sector holds no beam: the scan cannot see that VLM.
   std::optional<VlmObservation> observeAt(const GatewayPoints& points, const LaserScan& scan) const;
 
   const VlmObserverParams& params() const { return params_; }
