@@ -2,8 +2,10 @@
 // passage once, then its traversal from the side it was seen from; a robot turning left at a
 // hallway turn reports an L-Turn area (the trained HMMs of config/gateways) and its traversal
 // from the entrance to the left side; a detector resumed from a serialized checkpoint goes on
-// with exactly the events of one that never stopped, and a checkpoint keeps how far a running
-// hallway sequence has coasted; scans out of order and damaged checkpoints are typed errors.
+// with exactly the events of one that never stopped, also through a hallway gateway, and a
+// checkpoint keeps how far a running hallway sequence has coasted; an area made while the robot
+// is inside it knows the robot's entry side only from a sequence that ended with the robot
+// entering; scans out of order and damaged checkpoints are typed errors.
 #include "core/gateways/detection/GatewayDetector.h"
 
 #include <cppunit/extensions/HelperMacros.h>
@@ -14,6 +16,7 @@
 #include "core/common/Errors.h"
 #include "core/gateways/classify/HmmModelFile.h"
 #include "core/gateways/detection/DetectionStateCodec.h"
+#include "core/gateways/detection/HallwayAreaTracker.h"
 #include "core/gateways/vlm/ObservationVector.h"
 #include "core/gateways/vlm/testing/JunctionScan.h"
 #include "core/lines/testing/SyntheticScan.h"
@@ -45,11 +48,28 @@ LaserScan scanAt(const Pose2D& pose, DataId id) {
   return scan;
 }
 
+
+// Along the hallway of an L-turn (x = -6 ... 0) and out of its left leg (y = 0 ... 4), 5 cm apart.
+std::vector<Pose2D> throughTheLeftTurn() {
+  std::vector<Pose2D> path;
+  for (int i = 0; i <= 120; ++i) path.push_back({-6.0 + 0.05 * i, 0.0, 0.0});
+  for (int i = 1; i <= 80; ++i) path.push_back({0.0, 0.05 * i, M_PI / 2});
+  return path;
+}
+
+LaserScan leftTurnScanAt(const Pose2D& pose, DataId id) {
+  LaserScan scan = rgnav::testing::junctionScan(GatewayClass::LTurn, 2.0, pose);
+  scan.id = id;
+  return scan;
+}
+
+// The events of poses[from, to), the scan of pose i made by `scanOf` with ID i + 1.
+using ScanMaker = LaserScan (*)(const Pose2D&, DataId);
 std::vector<GatewayEvent> drive(GatewayDetector& detector, const std::vector<Pose2D>& poses, std::size_t from,
-                                std::size_t to) {
+                                std::size_t to, ScanMaker scanOf = scanAt) {
   std::vector<GatewayEvent> events;
   for (std::size_t i = from; i < to; ++i)
-    for (GatewayEvent& e : detector.addScan(scanAt(poses[i], i + 1), poses[i])) events.push_back(std::move(e));
+    for (GatewayEvent& e : detector.addScan(scanOf(poses[i], i + 1), poses[i])) events.push_back(std::move(e));
   return events;
 }
 
@@ -66,6 +86,8 @@ class GatewayDetectorTest : public CppUnit::TestFixture {
   CPPUNIT_TEST(doorIsReportedOnceThenTraversed);
   CPPUNIT_TEST(leftTurnIsClassifiedAndTraversed);
   CPPUNIT_TEST(resumedDetectorContinuesExactly);
+  CPPUNIT_TEST(resumedDetectorContinuesThroughAHallwayGateway);
+  CPPUNIT_TEST(onlyAnEnteredSequenceGivesTheEntrySide);
   CPPUNIT_TEST(checkpointKeepsCoasting);
   CPPUNIT_TEST(scansOutOfOrderAreRejected);
   CPPUNIT_TEST(damagedCheckpointIsAFormatError);
@@ -102,15 +124,8 @@ class GatewayDetectorTest : public CppUnit::TestFixture {
 
   void leftTurnIsClassifiedAndTraversed() {
     GatewayDetector detector({}, trainedModels());
-    std::vector<Pose2D> path;
-    for (int i = 0; i <= 120; ++i) path.push_back({-6.0 + 0.05 * i, 0.0, 0.0});
-    for (int i = 1; i <= 80; ++i) path.push_back({0.0, 0.05 * i, M_PI / 2});
-    std::vector<GatewayEvent> events;
-    for (std::size_t i = 0; i < path.size(); ++i) {
-      LaserScan scan = rgnav::testing::junctionScan(GatewayClass::LTurn, 2.0, path[i]);
-      scan.id = i + 1;
-      for (GatewayEvent& e : detector.addScan(scan, path[i])) events.push_back(std::move(e));
-    }
+    const std::vector<Pose2D> path = throughTheLeftTurn();
+    const std::vector<GatewayEvent> events = drive(detector, path, 0, path.size(), leftTurnScanAt);
     const std::vector<GatewayRecord> gateways = detector.gateways();
     CPPUNIT_ASSERT_EQUAL(std::size_t(1), gateways.size());
     CPPUNIT_ASSERT(gateways[0].kind == GatewayKind::HallwayArea);
@@ -139,6 +154,62 @@ class GatewayDetectorTest : public CppUnit::TestFixture {
       CPPUNIT_ASSERT_EQUAL(DataId(stop), resumed.lastScan());
       for (GatewayEvent& e : drive(resumed, poses, stop, poses.size())) events.push_back(std::move(e));
       CPPUNIT_ASSERT(events == expected);
+    }
+  }
+
+  // Through the L-turn the hallway sequence coasts near the gateway; a detector stopped there (or
+  // while the robot is inside the area) and resumed from its checkpoint reports the same events.
+  void resumedDetectorContinuesThroughAHallwayGateway() {
+    const HmmClassifier models = trainedModels();
+    const std::vector<Pose2D> path = throughTheLeftTurn();
+    GatewayDetector whole({}, models);
+    std::vector<GatewayEvent> expected;
+    std::size_t coastedScans = 0;
+    for (std::size_t i = 0; i < path.size(); ++i) {
+      for (GatewayEvent& e : drive(whole, path, i, i + 1, leftTurnScanAt)) expected.push_back(std::move(e));
+      for (const RunningSequence& r : whole.state().sequences.running) coastedScans += r.coasted > 0 ? 1 : 0;
+    }
+    CPPUNIT_ASSERT(coastedScans > 0);
+    CPPUNIT_ASSERT(!expected.empty());
+    for (const std::size_t stop : {std::size_t(100), std::size_t(115), std::size_t(125)}) {
+      GatewayDetector first({}, models);
+      std::vector<GatewayEvent> events = drive(first, path, 0, stop, leftTurnScanAt);
+      const DetectionCheckpoint saved = deserializeDetection(serializeDetection({first.state(), events}));
+      GatewayDetector resumed({}, models, saved.detector);
+      for (GatewayEvent& e : drive(resumed, path, stop, path.size(), leftTurnScanAt)) events.push_back(std::move(e));
+      CPPUNIT_ASSERT(events == expected);
+    }
+  }
+
+  // An area made by a lost sequence while the robot stands in it does not know where the robot
+  // came in, so leaving it is no traversal; made by a sequence that ended with the robot
+  // entering, it is (from the side the sequence saw it from).
+  void onlyAnEnteredSequenceGivesTheEntrySide() {
+    const HmmClassifier models = trainedModels();
+    HypothesisTracker sequences;
+    const VlmObserver observer;
+    std::optional<TrackedSequence> entered;
+    Pose2D enteredAt;
+    for (const Pose2D& pose : throughTheLeftTurn()) {
+      const LaserScan scan = leftTurnScanAt(pose, 1);
+      sequences.update(pose, observer.observe(scan), [&](const GatewayPoints& p) { return observer.observeAt(p, scan); });
+      for (TrackedSequence& s : sequences.takeFinished())
+        if (s.end == SequenceEnd::Entered && (!entered || s.observations.size() > entered->observations.size())) {
+          entered = std::move(s);
+          enteredAt = pose;
+        }
+    }
+    CPPUNIT_ASSERT(entered);
+    for (const SequenceEnd end : {SequenceEnd::Entered, SequenceEnd::Lost}) {
+      TrackedSequence sequence = *entered;
+      sequence.end = end;
+      HallwayAreaTracker areas({}, models);
+      areas.move({enteredAt.x, enteredAt.y});
+      const std::optional<std::size_t> area = areas.addSequence(sequence, 1, enteredAt);
+      CPPUNIT_ASSERT(area && areas.isGateway(*area));
+      const std::vector<AreaPassing> passings = areas.move({0.0, 3.0});
+      CPPUNIT_ASSERT_EQUAL(end == SequenceEnd::Entered ? std::size_t(1) : std::size_t(0), passings.size());
+      if (!passings.empty()) CPPUNIT_ASSERT_EQUAL(std::size_t(0), passings[0].fromSide);
     }
   }
 

@@ -93,9 +93,10 @@ std::optional<std::size_t> HallwayAreaTracker::addSequence(const TrackedSequence
   view->posterior = bayesUpdate(view->posterior, logLikelihoods);
   ++view->sequences;
   // A sequence ends when the robot enters the gateway, so an area it makes may already hold the
-  // robot, which came in through the side the sequence saw the gateway from.
+  // robot, which came in through the side the sequence saw the gateway from. A lost sequence
+  // says nothing about where the robot came in.
   const Eigen::Vector2d robot(robotPose.x, robotPose.y);
-  if (!area->enteredThrough && inside(area->points, robot)) {
+  if (sequence.end == SequenceEnd::Entered && !area->enteredThrough && inside(area->points, robot)) {
     std::size_t nearest = 0;
     for (std::size_t side = 1; side < 4; ++side)
       if ((sideMidpoint(area->points, side) - entrance).norm() < (sideMidpoint(area->points, nearest) - entrance).norm())

@@ -12,8 +12,9 @@
 //     4.1; Deadend and the counter-class Hallway are no transitions between regions.
 //   - Traversal (ours; the thesis tracks hallway gateways only until they are entered): the
 //     robot's path enters the square through one side and leaves it through another. A sequence
-//     ends as the robot enters, so an area its sequence makes or updates while the robot is
-//     inside takes the side nearest the sequence's entrance as the one the robot came through.
+//     ends as the robot enters, so an area that a sequence ended that way makes or updates while
+//     the robot is inside takes the side nearest the sequence's entrance as the one the robot
+//     came through (not so for a lost sequence: the robot may have come in from anywhere).
 #pragma once
 
 #include <Eigen/Core>
