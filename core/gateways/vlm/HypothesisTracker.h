@@ -15,11 +15,11 @@
 // Clutter that hides a depth singularity or breaks a wall line for a few scans then neither cuts
 // the sequence nor leaves out the observations close to the gateway, where the hypotheses fail
 // most often. On the simulated hallways (rgctl eval crossings, seed 1, 120 layouts) the lowest
-// class rate in the 2 m cluttered hallways rose from 0.944 to 0.979 (with HMMs retrained on
+// class rate in the 2 m cluttered hallways rose from 0.944 to 0.976 (with HMMs retrained on
 // coasted sequences, config/gateways). The price: the counter-class (hypotheses in a straight
-// hallway, no gateway) is told from the gateway classes slightly less well (93.9 % against
-// 95.2 % at 2 m, strongly cluttered), since a coasted observation repeats the lines of the
-// hypothesis, right or wrong. Coasting only happens while the VLM is in the scan's view
+// hallway, no gateway) is told from the gateway classes less well (91.5 % against 95.2 % at
+// 2 m, strongly cluttered), since a coasted observation repeats the lines of the hypothesis,
+// right or wrong. Coasting only happens while the VLM is in the scan's view
 // (VlmObserver::observeAt) and its centre within startDistanceM.
 #pragma once
 
