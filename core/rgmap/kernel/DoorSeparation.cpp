@@ -1,9 +1,11 @@
 // Whether a door separates its two sides (see DoorSeparation.h).
 #include "core/rgmap/kernel/DoorSeparation.h"
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <deque>
+#include <limits>
 #include <string>
 #include <utility>
 #include <vector>
@@ -52,23 +54,58 @@ struct Slab {
   }
 };
 
+// A hallway area's square (any convex quadrangle of its gateway points, map frame), grown by
+// overhangM and half a cell: in a real junction its corners are the walls' corners.
+struct Square {
+  std::vector<Eigen::Vector2d> corners;
+  Eigen::Vector2d centre = Eigen::Vector2d::Zero();
+  double margin = 0.0;
+
+  Square(const Gateway& area, const DoorSeparationConfig& config)
+      : corners(placeGateway(area).gatewayPoints), margin(config.overhangM + 0.5 * config.cellSizeM) {
+    for (const Eigen::Vector2d& c : corners) centre += c / double(corners.size());
+  }
+  double reach() const {
+    double r = 0.0;
+    for (const Eigen::Vector2d& c : corners) r = std::max(r, (c - centre).norm());
+    return r;
+  }
+  bool contains(const Eigen::Vector2d& p) const {
+    bool inside = true;
+    double nearest = std::numeric_limits<double>::infinity();
+    for (std::size_t k = 0; k < corners.size(); ++k) {
+      const Eigen::Vector2d a = corners[k], b = corners[(k + 1) % corners.size()];
+      const Eigen::Vector2d ab = b - a;
+      const double t = std::clamp((p - a).dot(ab) / std::max(ab.squaredNorm(), 1e-12), 0.0, 1.0);
+      nearest = std::min(nearest, (a + t * ab - p).norm());
+      // Same side of every edge as the centre: inside the convex quadrangle.
+      const auto cross = [](const Eigen::Vector2d& u, const Eigen::Vector2d& v) { return u.x() * v.y() - u.y() * v.x(); };
+      if (cross(ab, p - a) * cross(ab, centre - a) < 0.0) inside = false;
+    }
+    return inside || nearest <= margin;
+  }
+};
+
 // The cells within radiusM of a door's midpoint, in a square window: passable or not.
 class LocalWay {
  public:
-  LocalWay(const RegionFreespace& grid, const Eigen::Vector2d& mid, double radiusM)
-      : grid_(grid), centre_(grid.cellOf(mid)), half_(static_cast<int>(std::ceil(radiusM / grid.cellSizeM()))),
+  LocalWay(RegionFreespace grid, const Eigen::Vector2d& mid, double radiusM)
+      : grid_(std::move(grid)), centre_(grid_.cellOf(mid)),
+        half_(static_cast<int>(std::ceil(radiusM / grid_.cellSizeM()))),
         open_(std::size_t(2 * half_ + 1) * std::size_t(2 * half_ + 1), false) {
     for (int j = -half_; j <= half_; ++j)
       for (int i = -half_; i <= half_; ++i) {
         const int ci = centre_.i + i, cj = centre_.j + j;
-        open_[index(i, j)] = (grid.cellCenter(ci, cj) - mid).norm() <= radiusM && passable(ci, cj);
+        open_[index(i, j)] = (grid_.cellCenter(ci, cj) - mid).norm() <= radiusM && passable(ci, cj);
       }
   }
 
-  void block(const Slab& slab) {
+  // Closes every cell whose centre `shape` (a Slab or a Square) contains.
+  template <typename Shape>
+  void block(const Shape& shape) {
     for (int j = -half_; j <= half_; ++j)
       for (int i = -half_; i <= half_; ++i)
-        if (slab.contains(grid_.cellCenter(centre_.i + i, centre_.j + j))) open_[index(i, j)] = false;
+        if (shape.contains(grid_.cellCenter(centre_.i + i, centre_.j + j))) open_[index(i, j)] = false;
   }
 
   // Whether a 4-connected path of open cells joins the cells that contain `from` and `to`.
@@ -106,7 +143,7 @@ class LocalWay {
     return true;
   }
 
-  const RegionFreespace& grid_;
+  RegionFreespace grid_;
   LatticeCell centre_;
   int half_;
   std::vector<bool> open_;
@@ -126,19 +163,44 @@ void validate(const DoorSeparationConfig& config) {
       throw ConfigError(std::string("door separation: ") + name + " must be positive and finite");
 }
 
-bool separatesSpace(const RgMapState& state, GatewayId id, const DoorSeparationConfig& config) {
-  const Slab door(state.gateways.at(id), config);
-  const RegionFreespace grid = localGrid(state, door.mid, config.radiusM + config.scanMarginM, config.cellSizeM);
-  LocalWay way(grid, door.mid, config.radiusM);
-  way.block(door);
+namespace {
+
+// The local way around `centre` within `radius`, with `id` and the doors between two regions
+// nearby blocked.
+template <typename Shape>
+LocalWay wayAround(const RgMapState& state, GatewayId id, const Shape& shape, const Eigen::Vector2d& centre,
+                   double radius, const DoorSeparationConfig& config) {
+  LocalWay way(localGrid(state, centre, radius + config.scanMarginM, config.cellSizeM), centre, radius);
+  way.block(shape);
   for (const auto& [other, g] : state.gateways) {
     if (other == id || !g.door() || g.neutralised || g.sides[kSideA].region == 0 || g.sides[kSideB].region == 0)
       continue;
     const Slab slab(g, config);
-    if ((slab.mid - door.mid).norm() <= config.radiusM + slab.halfLength + slab.halfDepth) way.block(slab);
+    if ((slab.mid - centre).norm() <= radius + slab.halfLength + slab.halfDepth) way.block(slab);
   }
+  return way;
+}
+
+}  // namespace
+
+bool separatesSpace(const RgMapState& state, GatewayId id, const DoorSeparationConfig& config) {
+  const Slab door(state.gateways.at(id), config);
+  const LocalWay way = wayAround(state, id, door, door.mid, config.radiusM, config);
   const double seed = config.slabHalfDepthM + config.seedOffsetM;
   return !way.joins(door.mid + seed * door.normal, door.mid - seed * door.normal);
+}
+
+bool areaSeparatesSides(const RgMapState& state, GatewayId id, std::size_t fromCrossing, std::size_t toCrossing,
+                        const DoorSeparationConfig& config) {
+  const Gateway& area = state.gateways.at(id);
+  const Square square(area, config);
+  const LocalWay way = wayAround(state, id, square, square.centre, square.reach() + config.radiusM, config);
+  const PlacedGateway placed = placeGateway(area);
+  const auto seed = [&](std::size_t crossing) {
+    const Eigen::Vector2d c = placed.crossingPoints.at(crossing);
+    return Eigen::Vector2d(c + (square.margin + config.seedOffsetM + config.cellSizeM) * (c - square.centre).normalized());
+  };
+  return !way.joins(seed(fromCrossing), seed(toCrossing));
 }
 
 }  // namespace rgnav

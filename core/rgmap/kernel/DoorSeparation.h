@@ -16,7 +16,15 @@
 //   - the door separates unless a 4-connected path of passable cells within radiusM of the
 //     midpoint joins the cells seedOffsetM beyond the slab in front of and behind the midpoint.
 // Without evidence (a seed cell not passable) a door separates: the test only takes doors away.
+// The same test for a hallway area (ours; thesis 4.1 classifies a hallway area from what the
+// laser sees of it, and a room's corner or a gap between desks can look like a junction): the
+// area's square, grown by overhangM, blocks the way; the two sides the robot went between are
+// separated unless a way within radiusM of the square (the square's own reach plus radiusM from
+// its centre) joins the cells seedOffsetM beyond those sides' crossing points. In a real junction
+// the arms meet only in the square; in a room there is floor around it.
 #pragma once
+
+#include <cstddef>
 
 #include "core/rgmap/kernel/RgMapState.h"
 
@@ -36,5 +44,10 @@ void validate(const DoorSeparationConfig& config);
 
 // Whether door `id` of `state` separates its two sides (see above). `id` must be a narrow passage.
 bool separatesSpace(const RgMapState& state, GatewayId id, const DoorSeparationConfig& config);
+
+// Whether hallway area `id` separates the sides of its crossing points `fromCrossing` and
+// `toCrossing` (indices into its record's crossing points; see above).
+bool areaSeparatesSides(const RgMapState& state, GatewayId id, std::size_t fromCrossing, std::size_t toCrossing,
+                        const DoorSeparationConfig& config);
 
 }  // namespace rgnav

@@ -212,6 +212,8 @@ void RgMappingKernel::observe(const GatewayEvent& event, const Pose2D& odomToMap
     return;
   }
   const GatewayId id = takeIn(record, odomToMap, event.kind == GatewayEventKind::Updated, scan);
+  // A hallway area joins regions only through the traversals the detector reports (see the header).
+  if (!state_.gateways.at(id).door()) return;
   const std::optional<std::size_t> crossing = robotCrossing(state_.gateways.at(id), {robot.x, robot.y}, config_.sides);
   if (!crossing || seenThroughAnotherDoor(state_, id, {robot.x, robot.y}, *crossing)) return;
   const std::optional<std::size_t> side = sideOf(id, *crossing);
@@ -238,7 +240,10 @@ void RgMappingKernel::traverse(const GatewayEvent& event, const Pose2D& odomToMa
     return;
   repairMissedCrossing(id, *from, t.scanId);
   ++state_.gateways.at(id).traversalsFrom[*from];
-  const bool separates = !state_.gateways.at(id).door() || separatesSpace(state_, id, config_.separation);
+  const Gateway& crossed = state_.gateways.at(id);
+  const bool separates = crossed.door() ? separatesSpace(state_, id, config_.separation)
+                                        : areaSeparatesSides(state_, id, crossed.sides[*from].crossing,
+                                                             crossed.sides[*to].crossing, config_.separation);
   RegionId left = joinSide(id, *from, state_.current, t.scanId);
   if (!separates) left = joinSide(id, *to, left, t.scanId);  // no door: both sides are one region
   RegionId entered = state_.gateways.at(id).sides[*to].region;

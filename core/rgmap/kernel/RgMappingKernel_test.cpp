@@ -4,7 +4,8 @@
 // were taken in, a turn joining regions once two sequences support it and merging them again when
 // it turns out to be a hallway, a revisited room updated and not duplicated, region descriptions,
 // naming, merging on request, a path through the RG Graph, revised SLAM poses, bad inputs
-// refused; beams cut at every door with a region on a side or between two regions, and just
+// refused; a hallway area's sides attached by traversals only, and an area with floor around it
+// joining no regions; beams cut at every door with a region on a side or between two regions, and just
 // beyond the region's own doors, no robot side beside a door's ends.
 #include "core/rgmap/kernel/RgMappingKernel.h"
 
@@ -16,6 +17,7 @@
 #include "core/common/Errors.h"
 #include "core/lines/ScanPoints.h"
 #include "core/rgmap/graph/RgPathSearch.h"
+#include "core/rgmap/kernel/DoorSeparation.h"
 #include "core/rgmap/kernel/RgMapCodec.h"
 #include "core/rgmap/kernel/RgMapEdits.h"
 #include "core/rgmap/kernel/RgMapViews.h"
@@ -48,12 +50,16 @@ std::size_t countEvents(const RgMappingKernel& k, RgMapEventKind kind, RegionId 
 }
 
 // A hallway-area gateway at the south-east corner of ringCorridor() (the square x in [8, 10],
-// y in [0, 2]) as the detector reports it to a robot coming from the west: corners hidden-left,
-// front-left, front-right, hidden-right; crossing points hidden, left, front, right; all in the
-// tours' odometry frame, supported by `sequences` observation sequences.
+// y in [0, 2]; or the same square moved to have its south-west corner at `southWest`) as the
+// detector reports it to a robot coming from the west: corners hidden-left, front-left,
+// front-right, hidden-right; crossing points hidden, left, front, right; all in the tours'
+// odometry frame, supported by `sequences` observation sequences.
 GatewayEvent cornerEvent(GatewayEventId id, GatewayEventKind kind, const StoredScan& at, std::size_t from = 0,
-                         std::size_t to = 1, std::size_t sequences = 2) {
-  const auto odom = [](double x, double y) { return transformPoint(rgnav::testing::kTourDrift, {x, y}); };
+                         std::size_t to = 1, std::size_t sequences = 2,
+                         const Eigen::Vector2d& southWest = Eigen::Vector2d(8, 0)) {
+  const auto odom = [&](double x, double y) {
+    return transformPoint(rgnav::testing::kTourDrift, Eigen::Vector2d(x, y) + southWest - Eigen::Vector2d(8, 0));
+  };
   GatewayEvent e;
   e.id = id;
   e.kind = kind;
@@ -67,7 +73,8 @@ GatewayEvent cornerEvent(GatewayEventId id, GatewayEventKind kind, const StoredS
   r.support = sequences;
   r.firstScan = r.lastScan = at.scan.id;
   r.lastPose = at.scan.odometry;
-  e.traversal = {at.scan.id, from, to, odom(at.corrected.x, at.corrected.y), Eigen::Vector2d::UnitY()};
+  e.traversal = {at.scan.id, from, to, transformPoint(rgnav::testing::kTourDrift, {at.corrected.x, at.corrected.y}),
+                 Eigen::Vector2d::UnitY()};
   return e;
 }
 
@@ -86,6 +93,8 @@ class RgMappingKernelTest : public CppUnit::TestFixture {
   CPPUNIT_TEST(noSideBesideAPassagesEnds);
   CPPUNIT_TEST(preliminaryDescriptionGrowsWithTheScans);
   CPPUNIT_TEST(hallwayTurnJoinsTwoRegions);
+  CPPUNIT_TEST(hallwayAreaSidesComeFromTraversalsOnly);
+  CPPUNIT_TEST(areaWithFloorAroundItJoinsNoRegions);
   CPPUNIT_TEST(regionsAreNamedAndFoundByName);
   CPPUNIT_TEST(objectsAreNamedAndFoundByName);
   CPPUNIT_TEST(regionsAreMergedOnRequest);
@@ -247,6 +256,63 @@ class RgMappingKernelTest : public CppUnit::TestFixture {
     CPPUNIT_ASSERT_EQUAL(RegionId(1), k.currentRegionId());
     CPPUNIT_ASSERT(k.state().gateways.at(1).neutralised);
     CPPUNIT_ASSERT_EQUAL(std::string(), joinedViolations(k));
+  }
+
+  // Seen from right beside its west crossing point, the turn gets no region on that side: only
+  // its traversal attaches regions to a hallway area.
+  void hallwayAreaSidesComeFromTraversalsOnly() {
+    rgnav::testing::SyntheticTour tour(rgnav::testing::ringCorridor(), rgnav::testing::kTourDrift);
+    tour.setReports(21, rgnav::testing::DoorReports::None);
+    tour.driveThrough({{6.1, 1}, {7.3, 1}});
+    RgMappingKernel k;
+    for (const rgnav::testing::KernelInput& in : tour.inputs()) rgnav::testing::feed(k, in);
+    const StoredScan& at = *tour.inputs().back().scan;
+    k.addGatewayEvent(cornerEvent(1, GatewayEventKind::Detected, at), at.corrected);
+    k.addGatewayEvent(cornerEvent(2, GatewayEventKind::Updated, at), at.corrected);
+    const Gateway& corner = k.state().gateways.at(1);
+    CPPUNIT_ASSERT_EQUAL(RegionId(0), corner.sides[kSideA].region);
+    CPPUNIT_ASSERT_EQUAL(RegionId(0), corner.sides[kSideB].region);
+    CPPUNIT_ASSERT(k.state().regions.at(1).gateways.empty());
+  }
+
+  // A "turn" in the middle of an open room (the square x, y in [4, 6] of a 10 x 10 m room): the
+  // robot comes from the west and leaves it to the north, but there is floor all around it, so
+  // its two sides are one region and it is neutralised; the ring corridor's corner, between
+  // walls, separates.
+  void areaWithFloorAroundItJoinsNoRegions() {
+    rgnav::testing::TourWorld room;
+    room.walls = rgnav::testing::boxWalls({5, 5}, 0.0, 10, 10);
+    rgnav::testing::SyntheticTour tour(room, rgnav::testing::kTourDrift);
+    tour.driveThrough({{1, 5}, {5, 5}, {5, 8}, {2, 8}, {2, 2}, {8, 2}, {8, 8}, {5, 8}});
+    RgMappingKernel k;
+    bool detected = false, traversed = false;
+    for (const rgnav::testing::KernelInput& in : tour.inputs()) {
+      rgnav::testing::feed(k, in);
+      const StoredScan& at = *in.scan;
+      if (!detected && at.corrected.x >= 2.0) {
+        k.addGatewayEvent(cornerEvent(1, GatewayEventKind::Detected, at, 0, 1, 2, {4, 4}), at.corrected);
+        detected = true;
+      }
+      if (!traversed && at.corrected.y > 6.5) {
+        k.addGatewayEvent(cornerEvent(2, GatewayEventKind::Traversed, at, 0, 1, 2, {4, 4}), at.corrected);
+        traversed = true;
+      }
+    }
+    CPPUNIT_ASSERT(traversed);
+    CPPUNIT_ASSERT(!areaSeparatesSides(k.state(), 1, 0, 1, {}));
+    CPPUNIT_ASSERT_EQUAL(std::size_t(1), k.state().regions.size());
+    CPPUNIT_ASSERT(k.state().gateways.at(1).neutralised);
+    CPPUNIT_ASSERT_EQUAL(std::string(), joinedViolations(k));
+
+    rgnav::testing::SyntheticTour ring(rgnav::testing::ringCorridor(), rgnav::testing::kTourDrift);
+    ring.setReports(21, rgnav::testing::DoorReports::None);
+    ring.driveThrough({{6.1, 1}, {9, 1}, {9, 5}});
+    RgMappingKernel corner;
+    for (const rgnav::testing::KernelInput& in : ring.inputs()) rgnav::testing::feed(corner, in);
+    const StoredScan& last = *ring.inputs().back().scan;
+    corner.addGatewayEvent(cornerEvent(1, GatewayEventKind::Detected, last), last.corrected);
+    corner.addGatewayEvent(cornerEvent(2, GatewayEventKind::Traversed, last), last.corrected);
+    CPPUNIT_ASSERT(areaSeparatesSides(corner.state(), 1, 0, 1, {}));
   }
 
   void beamsAreCutAtEveryDoor() {
