@@ -11,7 +11,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <utility>
 
 #include "core/common/Errors.h"
 #include "core/gateways/vlm/HypothesisTracker.h"
@@ -77,6 +76,18 @@ std::vector<TrackedSequence> ofTrueGateway(const std::vector<TrackedSequence>& a
     return a.distances.size() > b.distances.size();
   });
   return out;
+}
+
+// Three undetected scans from `x` with `heading` on (UndetectedScans): the true gateway's
+// sequence is lost then, with its detections and no coasted observation.
+void expectLostWithDetectionsOnly(rgnav::HypothesisTracker tracker, double x = -3.8, double heading = 0.0) {
+  const std::size_t detected = runningTrueGateway(tracker)->sequence.observations.size();
+  UndetectedScans scans(tracker, x, heading);
+  for (int i = 0; i < 3; ++i) scans.next();
+  CPPUNIT_ASSERT(!runningTrueGateway(tracker));
+  const auto lost = ofTrueGateway(tracker.takeFinished());
+  CPPUNIT_ASSERT(!lost.empty());
+  CPPUNIT_ASSERT_EQUAL(detected, lost.front().observations.size());
 }
 
 }  // namespace
@@ -173,29 +184,14 @@ class HypothesisTrackerTest : public CppUnit::TestFixture {
   void fewDetectionsDoNotCoast() {
     rgnav::TrackerParams params;
     params.minDetectionsToCoast = 1000;
-    rgnav::HypothesisTracker tracker = afterTJunctionApproach(params);
-    const std::size_t detected = runningTrueGateway(tracker)->sequence.observations.size();
-    UndetectedScans scans(tracker);
-    for (int i = 0; i < 3; ++i) scans.next();
-    CPPUNIT_ASSERT(!runningTrueGateway(tracker));
-    const auto lost = ofTrueGateway(tracker.takeFinished());
-    CPPUNIT_ASSERT(!lost.empty());
-    CPPUNIT_ASSERT_EQUAL(detected, lost.front().observations.size());
+    expectLostWithDetectionsOnly(afterTJunctionApproach(params));
   }
 
   // Turned away from the junction, the scan cannot see it; 8 m back, it is beyond the start
   // distance. Either way the sequence is lost with its detections only.
   void noCoastingOutOfViewOrBeyondStartDistance() {
-    for (const auto& [x, heading] : {std::pair{-3.8, M_PI}, std::pair{-8.0, 0.0}}) {
-      rgnav::HypothesisTracker tracker = afterTJunctionApproach({});
-      const std::size_t detected = runningTrueGateway(tracker)->sequence.observations.size();
-      UndetectedScans scans(tracker, x, heading);
-      for (int i = 0; i < 3; ++i) scans.next();
-      CPPUNIT_ASSERT(!runningTrueGateway(tracker));
-      const auto lost = ofTrueGateway(tracker.takeFinished());
-      CPPUNIT_ASSERT(!lost.empty());
-      CPPUNIT_ASSERT_EQUAL(detected, lost.front().observations.size());
-    }
+    expectLostWithDetectionsOnly(afterTJunctionApproach({}), -3.8, M_PI);
+    expectLostWithDetectionsOnly(afterTJunctionApproach({}), -8.0, 0.0);
   }
 
   // A sequence that may not coast still ends as entered when the robot is past its entrance,

@@ -13,6 +13,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
 
 #include "core/common/Errors.h"
 #include "core/lines/ScanPoints.h"
@@ -76,6 +77,31 @@ GatewayEvent cornerEvent(GatewayEventId id, GatewayEventKind kind, const StoredS
   e.traversal = {at.scan.id, from, to, transformPoint(rgnav::testing::kTourDrift, {at.corrected.x, at.corrected.y}),
                  Eigen::Vector2d::UnitY()};
   return e;
+}
+
+// Feeds `inputs` (scans only) into `k`: after the first scan for which `detectWhen` holds,
+// `detect` runs, after the first for which `traverseWhen` holds (not before detect), `traverse`;
+// `afterEach` after every input. Whether `traverse` ran.
+using ScanTest = std::function<bool(const StoredScan&)>;
+using ScanAction = std::function<void(const StoredScan&)>;
+bool feedWithArea(RgMappingKernel& k, const std::vector<rgnav::testing::KernelInput>& inputs, const ScanTest& detectWhen,
+                  const ScanAction& detect, const ScanTest& traverseWhen, const ScanAction& traverse,
+                  const std::function<void()>& afterEach = [] {}) {
+  bool detected = false, traversed = false;
+  for (const rgnav::testing::KernelInput& in : inputs) {
+    rgnav::testing::feed(k, in);
+    const StoredScan& at = *in.scan;
+    if (!detected && detectWhen(at)) {
+      detect(at);
+      detected = true;
+    }
+    if (detected && !traversed && traverseWhen(at)) {
+      traverse(at);
+      traversed = true;
+    }
+    afterEach();
+  }
+  return traversed;
 }
 
 }  // namespace
@@ -208,23 +234,17 @@ class RgMappingKernelTest : public CppUnit::TestFixture {
     tour.setReports(21, rgnav::testing::DoorReports::None);
     tour.driveThrough({{6.1, 1}, {9, 1}, {9, 5}});
     RgMappingKernel k;
-    bool detected = false, traversed = false;
-    for (const rgnav::testing::KernelInput& in : tour.inputs()) {
-      rgnav::testing::feed(k, in);
-      const StoredScan& at = *in.scan;
-      if (!detected && at.corrected.x >= 6.5) {
-        k.addGatewayEvent(cornerEvent(1, GatewayEventKind::Detected, at), at.corrected);
-        detected = true;
-      }
-      if (!traversed && at.corrected.y > 2.0) {
-        // Seen in one sequence only, the turn joins no regions yet; in two, it does.
-        k.addGatewayEvent(cornerEvent(2, GatewayEventKind::Traversed, at, 0, 1, 1), at.corrected);
-        CPPUNIT_ASSERT_EQUAL(std::size_t(1), k.state().regions.size());
-        k.addGatewayEvent(cornerEvent(3, GatewayEventKind::Traversed, at), at.corrected);
-        traversed = true;
-      }
-      CPPUNIT_ASSERT_EQUAL(std::string(), joinedViolations(k));
-    }
+    feedWithArea(
+        k, tour.inputs(), [](const StoredScan& at) { return at.corrected.x >= 6.5; },
+        [&](const StoredScan& at) { k.addGatewayEvent(cornerEvent(1, GatewayEventKind::Detected, at), at.corrected); },
+        [](const StoredScan& at) { return at.corrected.y > 2.0; },
+        [&](const StoredScan& at) {
+          // Seen in one sequence only, the turn joins no regions yet; in two, it does.
+          k.addGatewayEvent(cornerEvent(2, GatewayEventKind::Traversed, at, 0, 1, 1), at.corrected);
+          CPPUNIT_ASSERT_EQUAL(std::size_t(1), k.state().regions.size());
+          k.addGatewayEvent(cornerEvent(3, GatewayEventKind::Traversed, at), at.corrected);
+        },
+        [&] { CPPUNIT_ASSERT_EQUAL(std::string(), joinedViolations(k)); });
     const RgMapState& s = k.state();
     CPPUNIT_ASSERT_EQUAL(std::size_t(2), s.regions.size());
     const Gateway& corner = s.gateways.at(1);
@@ -285,20 +305,15 @@ class RgMappingKernelTest : public CppUnit::TestFixture {
     rgnav::testing::SyntheticTour tour(room, rgnav::testing::kTourDrift);
     tour.driveThrough({{1, 5}, {5, 5}, {5, 8}, {2, 8}, {2, 2}, {8, 2}, {8, 8}, {5, 8}});
     RgMappingKernel k;
-    bool detected = false, traversed = false;
-    for (const rgnav::testing::KernelInput& in : tour.inputs()) {
-      rgnav::testing::feed(k, in);
-      const StoredScan& at = *in.scan;
-      if (!detected && at.corrected.x >= 2.0) {
-        k.addGatewayEvent(cornerEvent(1, GatewayEventKind::Detected, at, 0, 1, 2, {4, 4}), at.corrected);
-        detected = true;
-      }
-      if (!traversed && at.corrected.y > 6.5) {
-        k.addGatewayEvent(cornerEvent(2, GatewayEventKind::Traversed, at, 0, 1, 2, {4, 4}), at.corrected);
-        traversed = true;
-      }
-    }
-    CPPUNIT_ASSERT(traversed);
+    const auto report = [&](GatewayEventId id, GatewayEventKind kind) {
+      return [&k, id, kind](const StoredScan& at) {
+        k.addGatewayEvent(cornerEvent(id, kind, at, 0, 1, 2, {4, 4}), at.corrected);
+      };
+    };
+    CPPUNIT_ASSERT(feedWithArea(
+        k, tour.inputs(), [](const StoredScan& at) { return at.corrected.x >= 2.0; },
+        report(1, GatewayEventKind::Detected), [](const StoredScan& at) { return at.corrected.y > 6.5; },
+        report(2, GatewayEventKind::Traversed)));
     CPPUNIT_ASSERT(!areaSeparatesSides(k.state(), 1, 0, 1, {}));
     CPPUNIT_ASSERT_EQUAL(std::size_t(1), k.state().regions.size());
     CPPUNIT_ASSERT(k.state().gateways.at(1).neutralised);
