@@ -5,11 +5,12 @@
 
 #include "core/rgmap/describe/FreespaceRaster.h"
 #include "tests/eval/rooms/RegionGrowth.h"
+#include "tests/eval/rooms/RegionHoles.h"
 
 namespace rgnav {
 
 std::vector<SegmentPixels> regionPixels(const FinalMap& map, const Pose2D& mapToWorld, const OccupancyGrid& world,
-                                        double growM) {
+                                        double growM, double maxHoleM2) {
   const RasterFrame frame{world.resolution(), {world.origin().x, world.origin().y}, world.width(), world.height()};
   std::vector<std::uint8_t> free;
   for (const Cell cell : world.cells()) free.push_back(cell == Cell::Free ? 1 : 0);
@@ -22,6 +23,8 @@ std::vector<SegmentPixels> regionPixels(const FinalMap& map, const Pose2D& mapTo
   }
   growIntoUnclaimed(rasters, free, world.width(), world.height(),
                     int(std::floor(growM / world.resolution() + 1e-9)));
+  fillEnclosedHoles(rasters, world.width(), world.height(),
+                    std::size_t(std::floor(maxHoleM2 / (world.resolution() * world.resolution()))));
   std::vector<SegmentPixels> out;
   for (const RegionRaster& raster : rasters) {
     SegmentPixels segment{std::uint64_t(raster.regionId), {}};

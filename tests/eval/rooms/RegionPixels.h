@@ -6,7 +6,10 @@
 // benchmark's segmentations do (a 15 cm cell straddling a wall is free only on its free side).
 // Each region then grows up to growM over the free pixels no region claims (growIntoUnclaimed,
 // RegionGrowth.h: the strip along walls that 15 cm cells holding the wall leave out), as the
-// benchmark's segmentations end with a wavefront growth over the free pixels.
+// benchmark's segmentations end with a wavefront growth over the free pixels. Last, each region
+// takes the holes up to maxHoleM2 that its pixels enclose and no other region holds
+// (fillEnclosedHoles, RegionHoles.h: furniture standing free in a room, which the ground-truth
+// rooms include).
 #pragma once
 
 #include <vector>
@@ -21,6 +24,6 @@ namespace rgnav {
 // One segment per region, ID = region ID, pixel indices row * width + col of `world` (row 0 at
 // the bottom, as GroundTruth::labels).
 std::vector<SegmentPixels> regionPixels(const FinalMap& map, const Pose2D& mapToWorld, const OccupancyGrid& world,
-                                        double growM);
+                                        double growM, double maxHoleM2);
 
 }  // namespace rgnav

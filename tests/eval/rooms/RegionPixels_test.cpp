@@ -45,7 +45,7 @@ class RegionPixelsTest : public CppUnit::TestFixture {
     // Region frame at (0.2, 0.1) in the map, the map shifted by (0.5, 0.2) in the world: the
     // freespace covers [0.7, 1.0) x [0.3, 0.6), pixel columns 14..19 and rows 6..11.
     const std::vector<rgnav::SegmentPixels> segments =
-        rgnav::regionPixels(oneRegion({0.2, 0.1, 0.0}), {0.5, 0.2, 0.0}, world, 0.0);
+        rgnav::regionPixels(oneRegion({0.2, 0.1, 0.0}), {0.5, 0.2, 0.0}, world, 0.0, 0.0);
     CPPUNIT_ASSERT_EQUAL(std::size_t(1), segments.size());
     CPPUNIT_ASSERT_EQUAL(std::uint64_t(7), segments[0].id);
     CPPUNIT_ASSERT_EQUAL(std::size_t(36), segments[0].pixels.size());
@@ -58,7 +58,7 @@ class RegionPixelsTest : public CppUnit::TestFixture {
     rgnav::OccupancyGrid world(kWidth, kHeight, 0.05);
     for (int row = 0; row < kHeight; ++row) world.set({16, row}, rgnav::Cell::Occupied);
     const std::vector<rgnav::SegmentPixels> segments =
-        rgnav::regionPixels(oneRegion({0.2, 0.1, 0.0}), {0.5, 0.2, 0.0}, world, 0.0);
+        rgnav::regionPixels(oneRegion({0.2, 0.1, 0.0}), {0.5, 0.2, 0.0}, world, 0.0, 0.0);
     CPPUNIT_ASSERT_EQUAL(std::size_t(30), segments[0].pixels.size());
     CPPUNIT_ASSERT(!holds(segments[0], pixel(16, 8)));
   }
@@ -69,7 +69,7 @@ class RegionPixelsTest : public CppUnit::TestFixture {
     // Columns 14..19 claimed; 0.1 m of growth adds columns 12, 13, 20, 21 (the wall at 22 stops
     // it) and rows 4, 5, 12, 13.
     const std::vector<rgnav::SegmentPixels> segments =
-        rgnav::regionPixels(oneRegion({0.2, 0.1, 0.0}), {0.5, 0.2, 0.0}, world, 0.1);
+        rgnav::regionPixels(oneRegion({0.2, 0.1, 0.0}), {0.5, 0.2, 0.0}, world, 0.1, 0.0);
     CPPUNIT_ASSERT_EQUAL(std::size_t(10 * 10), segments[0].pixels.size());
     CPPUNIT_ASSERT(holds(segments[0], pixel(12, 4)));
     CPPUNIT_ASSERT(holds(segments[0], pixel(21, 13)));
