@@ -85,13 +85,40 @@ std::vector<GatewaySegment> doorFrameLines(std::span<const OwnDoor> doors, const
   return out;
 }
 
+namespace {
+
+// Where `sensor` lies with respect to `door`: how far past its line (negative: in front of it) and
+// how far beside its ends (negative: between them).
+struct DoorOffset {
+  double past = 0.0;
+  double beside = 0.0;
+};
+
+DoorOffset offsetFrom(const OwnDoor& door, const Eigen::Vector2d& sensor) {
+  const double length = (door.line.b - door.line.a).norm();
+  const Eigen::Vector2d along = (door.line.b - door.line.a) / length;
+  const Eigen::Vector2d offset = sensor - 0.5 * (door.line.a + door.line.b);
+  return {offset.dot(door.away), std::abs(offset.dot(along)) - 0.5 * length};
+}
+
+}  // namespace
+
+std::vector<GatewaySegment> doorWallLines(std::span<const OwnDoor> doors, const Eigen::Vector2d& sensor,
+                                          const DoorWallCut& cut) {
+  std::vector<GatewaySegment> out;
+  for (const OwnDoor& door : doors) {
+    const DoorOffset at = offsetFrom(door, sensor);
+    if (at.past > 0.0 || at.past < -cut.frontM || at.beside > cut.besideM) continue;
+    const Eigen::Vector2d along = (door.line.b - door.line.a).normalized();
+    out.push_back({door.line.a - cut.wallM * along, door.line.b + cut.wallM * along});
+  }
+  return out;
+}
+
 bool pastOwnDoor(std::span<const OwnDoor> doors, const Eigen::Vector2d& sensor, const PastOwnDoor& limits) {
   return std::any_of(doors.begin(), doors.end(), [&](const OwnDoor& door) {
-    const double length = (door.line.b - door.line.a).norm();
-    const Eigen::Vector2d along = (door.line.b - door.line.a) / length;
-    const Eigen::Vector2d offset = sensor - 0.5 * (door.line.a + door.line.b);
-    const double past = offset.dot(door.away);
-    return past > 0.0 && past <= limits.depthM && std::abs(offset.dot(along)) <= 0.5 * length + limits.besideM;
+    const DoorOffset at = offsetFrom(door, sensor);
+    return at.past > 0.0 && at.past <= limits.depthM && at.beside <= limits.besideM;
   });
 }
 
@@ -101,6 +128,8 @@ RegionModels::RegionModels(const RegionModelConfig& config) : config_(config) {
     throw ConfigError("region models: door frame depth and widening must be >= 0");
   if (!(config.pastOwnDoors.depthM >= 0.0) || !(config.pastOwnDoors.besideM >= 0.0))
     throw ConfigError("region models: the depth and the margin past own doors must be >= 0");
+  if (!(config.doorWalls.frontM >= 0.0) || !(config.doorWalls.besideM >= 0.0) || !(config.doorWalls.wallM >= 0.0))
+    throw ConfigError("region models: the door wall cut's distances must be >= 0");
   validate(config.unattachedDoors);
   RegionEvidence{config.evidence};
   RegionLineMap{config.extractor, config.merger};
@@ -144,8 +173,13 @@ RegionModels::Model& RegionModels::upToDate(const RgMapState& state, RegionId id
       const ScanKey key = keyAt(i);
       const Pose2D inRegion = between(r.frame, key.corrected);
       const LaserScan& scan = state.scans.at(key.id).scan;
-      if (!pastOwnDoor(m.doors, {inRegion.x, inRegion.y}, config_.pastOwnDoors))
-        m.evidence.addScan(scan, inRegion, m.cutting);  // the only step that can reject the scan
+      const Eigen::Vector2d sensor(inRegion.x, inRegion.y);
+      if (!pastOwnDoor(m.doors, sensor, config_.pastOwnDoors)) {
+        std::vector<GatewaySegment> cutting = m.cutting;
+        const std::vector<GatewaySegment> walls = doorWallLines(m.doors, sensor, config_.doorWalls);
+        cutting.insert(cutting.end(), walls.begin(), walls.end());
+        m.evidence.addScan(scan, inRegion, cutting);  // the only step that can reject the scan
+      }
       m.lines.addScan(scan, inRegion);
       m.scans.push_back(key);
       m.description.reset();

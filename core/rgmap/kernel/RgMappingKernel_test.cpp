@@ -401,6 +401,21 @@ class RgMappingKernelTest : public CppUnit::TestFixture {
     CPPUNIT_ASSERT(!past(4.0, 2.5));  // in the room
     CPPUNIT_ASSERT(!past(4.0, 0.8));  // deeper in the hallway
     CPPUNIT_ASSERT(!past(5.3, 1.5));  // beside the door
+    // In front of the door, in the room, its beams are also cut at the door's wall: the door's
+    // line lengthened 3 m at both ends.
+    const auto walls = [&](double x, double y) {
+      const Pose2D inRoom = between(room1.frame, Pose2D{x, y, 0.0});
+      return doorWallLines(doors, {inRoom.x, inRoom.y}, DoorWallCut{1.2, 0.5, 3.0});
+    };
+    const std::vector<GatewaySegment> wall = walls(4.0, 2.8);
+    CPPUNIT_ASSERT_EQUAL(std::size_t(1), wall.size());
+    const double wallLength = (wall[0].b - wall[0].a).norm();
+    CPPUNIT_ASSERT_DOUBLES_EQUAL(0.9 + 6.0, wallLength, 0.1);
+    CPPUNIT_ASSERT_DOUBLES_EQUAL(0.0, doors[0].away.dot(wall[0].a - doors[0].line.a), 1e-9);  // on the door's line
+    CPPUNIT_ASSERT_EQUAL(std::size_t(1), walls(4.9, 2.1).size());
+    CPPUNIT_ASSERT(walls(4.0, 3.5).empty());  // farther into the room
+    CPPUNIT_ASSERT(walls(4.0, 1.5).empty());  // past the door
+    CPPUNIT_ASSERT(walls(5.3, 2.5).empty());  // beside the door
     // A hallway scan in the doorway that reached room 1 (a traversal reported late) adds nothing
     // to room 1's description: no scan, no freespace.
     const std::vector<DataId>& hallwayScans = s.regions.at(kHallway).scans;
