@@ -20,7 +20,8 @@
 // laser sees of it, and a room's corner or a gap between desks can look like a junction): the
 // area's square, grown by overhangM, blocks the way; the two sides the robot went between are
 // separated unless a way within radiusM of the square (the square's own reach plus radiusM from
-// its centre) joins the cells seedOffsetM beyond those sides' crossing points. In a real junction
+// its centre) joins the cells just beyond the grown square (overhangM, half a cell, seedOffsetM and
+// a cell) outward from those sides' crossing points. In a real junction
 // the arms meet only in the square; in a room there is floor around it.
 #pragma once
 

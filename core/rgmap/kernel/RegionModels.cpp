@@ -107,6 +107,7 @@ std::vector<GatewaySegment> doorWallLines(std::span<const OwnDoor> doors, const 
                                           const DoorWallCut& cut) {
   std::vector<GatewaySegment> out;
   for (const OwnDoor& door : doors) {
+    if (!((door.line.b - door.line.a).norm() > 0.0)) continue;
     const DoorOffset at = offsetFrom(door, sensor);
     if (at.past > 0.0 || at.past < -cut.frontM || at.beside > cut.besideM) continue;
     const Eigen::Vector2d along = (door.line.b - door.line.a).normalized();
@@ -175,10 +176,14 @@ RegionModels::Model& RegionModels::upToDate(const RgMapState& state, RegionId id
       const LaserScan& scan = state.scans.at(key.id).scan;
       const Eigen::Vector2d sensor(inRegion.x, inRegion.y);
       if (!pastOwnDoor(m.doors, sensor, config_.pastOwnDoors)) {
-        std::vector<GatewaySegment> cutting = m.cutting;
         const std::vector<GatewaySegment> walls = doorWallLines(m.doors, sensor, config_.doorWalls);
-        cutting.insert(cutting.end(), walls.begin(), walls.end());
-        m.evidence.addScan(scan, inRegion, cutting);  // the only step that can reject the scan
+        if (walls.empty()) {
+          m.evidence.addScan(scan, inRegion, m.cutting);  // the only step that can reject the scan
+        } else {
+          std::vector<GatewaySegment> cutting = m.cutting;
+          cutting.insert(cutting.end(), walls.begin(), walls.end());
+          m.evidence.addScan(scan, inRegion, cutting);
+        }
       }
       m.lines.addScan(scan, inRegion);
       m.scans.push_back(key);

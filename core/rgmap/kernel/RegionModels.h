@@ -119,8 +119,8 @@ bool pastOwnDoor(std::span<const OwnDoor> doors, const Eigen::Vector2d& sensor, 
 
 class RegionModels {
  public:
-  // Throws ConfigError for a negative door frame depth or widening, a negative PastOwnDoor
-  // distance, a bad DoorSideProbe (and as RegionEvidence and RegionLineMap do for theirs).
+  // Throws ConfigError for a negative door frame depth or widening, a negative PastOwnDoor or
+  // DoorWallCut distance, a bad DoorSideProbe (and as RegionEvidence and RegionLineMap do for theirs).
   explicit RegionModels(const RegionModelConfig& config = {});
 
   // The line map / description of region `id` of `state`. Throws NotAvailableError for an unknown
@@ -142,7 +142,8 @@ class RegionModels {
     Pose2D frame;
     std::vector<GatewaySegment> gateways;  // its own gateway lines
     std::vector<GatewaySegment> cutting;   // `gateways`, otherDoorLines, doorFrameLines: what cuts its beams
-    std::vector<OwnDoor> doors;            // its own doors: scans past them leave out its evidence
+    std::vector<OwnDoor> doors;            // its own doors: scans past them leave out its evidence,
+                                           // scans in front of them are also cut at doorWallLines
     std::vector<ScanKey> scans;  // the scans in `lines` and `evidence`, in order
     RegionLineMap lines;
     RegionEvidence evidence;

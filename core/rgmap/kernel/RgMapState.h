@@ -58,8 +58,8 @@ struct Gateway {
   // ... and the transform that places it into the map frame: corrected(lastScan) ∘ odometry(lastScan)^-1.
   Pose2D odomToMap;
   // Side A and side B. A narrow passage's sides are its crossing points 0 and 1; a hallway area's
-  // side A is the side the robot first saw it from, side B the first other side it was traversed
-  // to or seen from.
+  // side A is the side its first traversal started from, side B the side that traversal went to
+  // (areas get their sides from traversals only, RgMappingKernel.h).
   std::array<GatewaySideRef, 2> sides;
   std::array<std::size_t, 2> traversalsFrom{};  // traversals that started on side A / side B
   bool neutralised = false;                     // the same region on both sides (thesis 6.1.1)

@@ -64,9 +64,9 @@
 // Same inputs, same map: nothing depends on addresses, hashing or time.
 // Deliberate differences: the thesis matches scans within a region (ScanStudio); we take the
 // ScanMapper's corrected poses as they are and treat a corrected pose as the sensor pose (as the
-// ScanMapper does). A hallway area joins at most two regions here: the side the robot first saw
-// it from and the first other side it was traversed to or seen from; traversals and
-// observations through its further sides change no structure. Labels that are no transition
+// ScanMapper does). A hallway area joins at most two regions here: the side of its first
+// traversal's start and the side that traversal went to; traversals through its further sides
+// change no structure. Labels that are no transition
 // (Deadend, Hallway) drop a gateway that was never traversed; one that was traversed keeps the
 // label and joins nothing: the regions on its two sides are merged (it is neutralised).
 // The final description is computed when first asked for (a checkpoint does not hold it), not at

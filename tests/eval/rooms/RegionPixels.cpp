@@ -3,6 +3,7 @@
 
 #include <cmath>
 
+#include "core/common/Errors.h"
 #include "core/rgmap/describe/FreespaceRaster.h"
 #include "tests/eval/rooms/RegionGrowth.h"
 #include "tests/eval/rooms/RegionHoles.h"
@@ -11,6 +12,8 @@ namespace rgnav {
 
 std::vector<SegmentPixels> regionPixels(const FinalMap& map, const Pose2D& mapToWorld, const OccupancyGrid& world,
                                         double growM, double maxHoleM2) {
+  if (!(maxHoleM2 >= 0.0) || !std::isfinite(maxHoleM2))
+    throw InvalidArgumentError("regionPixels: the largest hole must be a finite area >= 0");
   const RasterFrame frame{world.resolution(), {world.origin().x, world.origin().y}, world.width(), world.height()};
   std::vector<std::uint8_t> free;
   for (const Cell cell : world.cells()) free.push_back(cell == Cell::Free ? 1 : 0);

@@ -22,7 +22,8 @@
 namespace rgnav {
 
 // One segment per region, ID = region ID, pixel indices row * width + col of `world` (row 0 at
-// the bottom, as GroundTruth::labels).
+// the bottom, as GroundTruth::labels). Throws InvalidArgumentError for a negative or non-finite
+// maxHoleM2 or a negative growM.
 std::vector<SegmentPixels> regionPixels(const FinalMap& map, const Pose2D& mapToWorld, const OccupancyGrid& world,
                                         double growM, double maxHoleM2);
 

@@ -1,10 +1,11 @@
 // Tests regionPixels (RegionPixels.h) on a hand-made map: a region's freespace lands on the floor
-// plan pixels its frame pose and mapToWorld put it on, only on the world's free pixels, and grows
-// over free pixels up to growM.
+// plan pixels its frame pose and mapToWorld put it on, only on the world's free pixels, grows
+// over free pixels up to growM and takes the holes up to maxHoleM2 it encloses.
 #include <cppunit/extensions/HelperMacros.h>
 
 #include <algorithm>
 
+#include "core/common/Errors.h"
 #include "tests/eval/rooms/RegionPixels.h"
 
 namespace {
@@ -37,6 +38,7 @@ class RegionPixelsTest : public CppUnit::TestFixture {
   CPPUNIT_TEST(placesTheFreespaceByFrameAndMapToWorld);
   CPPUNIT_TEST(keepsOnlyTheWorldsFreePixels);
   CPPUNIT_TEST(growsOverFreePixelsUpToGrowM);
+  CPPUNIT_TEST(takesTheHolesItEncloses);
   CPPUNIT_TEST_SUITE_END();
 
  public:
@@ -74,6 +76,21 @@ class RegionPixelsTest : public CppUnit::TestFixture {
     CPPUNIT_ASSERT(holds(segments[0], pixel(12, 4)));
     CPPUNIT_ASSERT(holds(segments[0], pixel(21, 13)));
     CPPUNIT_ASSERT(!holds(segments[0], pixel(23, 8)));
+  }
+
+  // A 2 x 2 pixel block standing inside the region: left out of its freespace, taken as a hole
+  // of 0.01 m^2 when holes that large are allowed; a negative limit is refused.
+  void takesTheHolesItEncloses() {
+    rgnav::OccupancyGrid world(kWidth, kHeight, 0.05);
+    for (int row = 8; row <= 9; ++row)
+      for (int col = 16; col <= 17; ++col) world.set({col, row}, rgnav::Cell::Occupied);
+    const auto pixelsWith = [&](double maxHoleM2) {
+      return rgnav::regionPixels(oneRegion({0.2, 0.1, 0.0}), {0.5, 0.2, 0.0}, world, 0.0, maxHoleM2)[0].pixels.size();
+    };
+    CPPUNIT_ASSERT_EQUAL(std::size_t(32), pixelsWith(0.0));
+    CPPUNIT_ASSERT_EQUAL(std::size_t(32), pixelsWith(0.009));
+    CPPUNIT_ASSERT_EQUAL(std::size_t(36), pixelsWith(0.011));
+    CPPUNIT_ASSERT_THROW(pixelsWith(-1.0), rgnav::InvalidArgumentError);
   }
 };
 

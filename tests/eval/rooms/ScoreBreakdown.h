@@ -2,9 +2,10 @@
 // part of the mapping to improve.
 // Recall, as means over the ground-truth rooms of pixel shares:
 //   - ceiling: room pixels free in the world (the furnished floor plan), none for a room the tour
-//     cannot reach: no segmentation of the furnished map can claim furniture blocks (or the GT's
-//     pixels that are walls in the world), and a robot maps no room it cannot get into;
-//   - covered: room pixels some segment claims (the rest was never seen as free);
+//     cannot reach: what freespace alone can cover, since a robot maps no room it cannot get
+//     into and sees no floor under furniture (regions add only the furniture they enclose,
+//     RegionHoles.h, so covered may exceed it);
+//   - covered: room pixels some segment claims;
 //   - the recall itself: room pixels the room's best segment claims (covered - recall: the room
 //     is split between segments).
 // Precision, as shares of all scored segment pixels (pooled), for the pixels outside each
