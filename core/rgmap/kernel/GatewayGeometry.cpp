@@ -1,9 +1,7 @@
 // Placement and sides of the RG Map's gateways; see GatewayGeometry.h.
 #include "core/rgmap/kernel/GatewayGeometry.h"
 
-#include <algorithm>
 #include <cmath>
-#include <limits>
 
 #include "core/gateways/passages/SegmentCrossing.h"
 #include "core/lines/ScanPoints.h"
@@ -16,17 +14,6 @@ double cross(const Eigen::Vector2d& u, const Eigen::Vector2d& v) { return u.x() 
 // Signed distance of p from the line a-b, positive to its left.
 double signedDistance(const Eigen::Vector2d& a, const Eigen::Vector2d& b, const Eigen::Vector2d& p) {
   return cross(b - a, p - a) / (b - a).norm();
-}
-
-// How far p lies outside the convex quadrangle q (largest distance beyond an edge line; negative inside).
-double outsideDistance(const std::vector<Eigen::Vector2d>& q, const Eigen::Vector2d& p) {
-  double area2 = 0.0;
-  for (std::size_t i = 0; i < q.size(); ++i) area2 += cross(q[i], q[(i + 1) % q.size()]);
-  const double outward = area2 > 0.0 ? -1.0 : 1.0;  // counter-clockwise: the outside is on the right
-  double worst = -std::numeric_limits<double>::infinity();
-  for (std::size_t i = 0; i < q.size(); ++i)
-    worst = std::max(worst, outward * signedDistance(q[i], q[(i + 1) % q.size()], p));
-  return worst;
 }
 
 }  // namespace
@@ -70,13 +57,11 @@ Eigen::Vector2d traversalDirection(const Gateway& gateway) {
 
 std::optional<std::size_t> robotCrossing(const Gateway& gateway, const Eigen::Vector2d& robot,
                                          const SideEvidenceConfig& config) {
+  if (gateway.record.kind != GatewayKind::NarrowPassage) return std::nullopt;
   const PlacedGateway placed = placeGateway(gateway);
   const std::vector<Eigen::Vector2d>& c = placed.crossingPoints;
   const std::vector<Eigen::Vector2d>& g = placed.gatewayPoints;
-  const std::size_t nearest = nearestCrossing(placed, robot);
-  if ((c[nearest] - robot).norm() > config.rangeM) return std::nullopt;
-  if (gateway.record.kind == GatewayKind::HallwayArea)
-    return outsideDistance(g, robot) < config.marginM ? std::nullopt : std::optional(nearest);
+  if ((c[nearestCrossing(placed, robot)] - robot).norm() > config.rangeM) return std::nullopt;
   const double d = signedDistance(g[0], g[1], robot);
   if (std::abs(d) < config.marginM) return std::nullopt;
   const Eigen::Vector2d along = g[1] - g[0];

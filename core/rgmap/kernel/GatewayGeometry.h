@@ -9,11 +9,12 @@
 //     hallway area, the side of its square the region lies beyond (corners hidden-left,
 //     front-left, front-right, hidden-right; sides hidden, left, front, right), so what lies in the
 //     square or beyond another side is kept out of the region's description.
-//   - The robot's side: the crossing point nearest to the robot, if it is within rangeM; not
-//     decided while the robot is within marginM of a passage's line or of the square of a
-//     hallway area (it may be crossing it right now), nor (ours) while it is more than besideM
-//     beside a passage's ends: a robot in the next room along a hallway wall is on the same side
-//     of a door's line as the room behind that door, but not in it.
+//   - The robot's side of a narrow passage: the crossing point nearest to the robot, if it is
+//     within rangeM; not decided while the robot is within marginM of the passage's line (it may
+//     be crossing it right now), nor (ours) while it is more than besideM beside the passage's
+//     ends: a robot in the next room along a hallway wall is on the same side of a door's line as
+//     the room behind that door, but not in it. Not decided for hallway areas, whose sides come
+//     from the traversals the detector reports (RgMappingKernel.h).
 //   - A missed traversal (6.1.1, figure 6.4): the last step of the robot's path that crossed a
 //     narrow passage's line onto the side the robot is on now. Deliberate difference: not
 //     searched for hallway areas, whose traversals the detector reports itself
@@ -64,7 +65,8 @@ std::vector<GatewaySegment> sideSegments(const Gateway& gateway, std::size_t sid
 // crossing point is not known.
 Eigen::Vector2d traversalDirection(const Gateway& gateway);
 
-// The index of the crossing point on the robot's side, or nullopt when undecided (see above).
+// The index of the crossing point on the robot's side of a narrow passage, or nullopt when
+// undecided or the gateway is a hallway area (see above).
 std::optional<std::size_t> robotCrossing(const Gateway& gateway, const Eigen::Vector2d& robotInMap,
                                          const SideEvidenceConfig& config);
 

@@ -74,8 +74,8 @@ void fillEnclosedHoles(std::span<RegionRaster> regions, int width, int height, s
         if (enclosed && component.size() <= maxHoleCells)
           holes[k].insert(holes[k].end(), component.begin(), component.end());
       }
-    for (int row = std::max(box.row0, 0); row <= box.row1; ++row)
-      for (int col = std::max(box.col0, 0); col <= box.col1; ++col)
+    for (int row = box.row0; row <= box.row1; ++row)
+      for (int col = box.col0; col <= box.col1; ++col)
         seen[std::size_t(row) * std::size_t(width) + std::size_t(col)] = 0;
   }
   for (std::size_t k = 0; k < regions.size(); ++k)
