@@ -62,4 +62,18 @@ ScoreBreakdown breakDownScore(const GroundTruth& truth, const OccupancyGrid& wor
   return out;
 }
 
+double furnitureShareMean(const GroundTruth& truth, const OccupancyGrid& world, const OccupancyGrid& empty) {
+  const auto rooms = std::size_t(truth.roomCount);
+  std::vector<double> pixels(rooms, 0.0), furniture(rooms, 0.0);
+  for (std::size_t i = 0; i < truth.labels.size(); ++i) {
+    if (truth.labels[i] < 0) continue;
+    const auto room = std::size_t(truth.labels[i]);
+    ++pixels[room];
+    furniture[room] += empty.cells()[i] == Cell::Free && world.cells()[i] != Cell::Free;
+  }
+  double mean = 0.0;
+  for (std::size_t r = 0; r < rooms; ++r) mean += furniture[r] / pixels[r] / double(rooms);
+  return mean;
+}
+
 }  // namespace rgnav

@@ -39,4 +39,9 @@ ScoreBreakdown breakDownScore(const GroundTruth& truth, const OccupancyGrid& wor
                               std::span<const SegmentPixels> segments, const RoomScore& score,
                               std::span<const int> unreachableRooms);
 
+// The mean share of each ground-truth room's pixels that furniture covers: free in `empty` (the
+// floor plan without furniture) and not in `world` (the furnished one). The rooms of the ground
+// truth include it; no laser sees under it, and of furniture against a wall not even its back.
+double furnitureShareMean(const GroundTruth& truth, const OccupancyGrid& world, const OccupancyGrid& empty);
+
 }  // namespace rgnav

@@ -81,7 +81,7 @@ MappingRun mapOne(const std::string& mapPath, const LoadedWorld& world, const Op
 
 struct Totals {
   std::size_t maps = 0, scans = 0;
-  double recallMeans = 0.0, precisionMeans = 0.0, ceilingMeans = 0.0, mappingSeconds = 0.0;
+  double recallMeans = 0.0, precisionMeans = 0.0, ceilingMeans = 0.0, furnitureMeans = 0.0, mappingSeconds = 0.0;
   std::size_t roomOverlap = 0, roomPixels = 0, segmentOverlap = 0, segmentPixels = 0;
   ObjectScore objects;
 };
@@ -131,8 +131,10 @@ void evaluate(const std::string& mapPath, const Options& options, const std::opt
   std::printf("#   losses: recall ceiling %.3f covered %.3f best %.3f | precision pixels off-room %.3f leaked %.3f "
               "merged %.3f\n", losses.ceilingMean, losses.coveredMean, score.recallMean(), losses.offRoomShare,
               losses.leakedShare, losses.mergedShare);
-  const ObjectScore objects = scoreObjects(
-      run.map, run.mapToWorld, world.grid, furnitureTruth(world.grid, loadFloorPlan(files.empty), kMinFurnitureCells));
+  const OccupancyGrid empty = loadFloorPlan(files.empty);
+  const double furniture = furnitureShareMean(*world.truth, world.grid, empty);
+  const ObjectScore objects =
+      scoreObjects(run.map, run.mapToWorld, world.grid, furnitureTruth(world.grid, empty, kMinFurnitureCells));
   std::printf("#   objects: %zu, on furniture %zu (%.3f) | furniture blobs >= %d cells found %zu of %zu\n",
               objects.objects, objects.onFurniture, ratio(objects.onFurniture, objects.objects), kMinFurnitureCells,
               objects.blobsFound, objects.blobs);
@@ -143,6 +145,7 @@ void evaluate(const std::string& mapPath, const Options& options, const std::opt
   totals.mappingSeconds += run.mappingSeconds;
   totals.recallMeans += score.recallMean();
   totals.ceilingMeans += losses.ceilingMean;
+  totals.furnitureMeans += furniture;
   totals.precisionMeans += score.precisionMean();
   totals.roomOverlap += score.roomOverlapSum();
   totals.roomPixels += score.roomPixelSum();
@@ -249,8 +252,9 @@ int main(int argc, char** argv) {
                 double(totals.scans) / std::max(totals.mappingSeconds, 1e-9));
     std::printf("# recall ceiling mean=%.3f: the share of each room's pixels that are free in the furnished map and\n"
                 "# reachable by the tour; freespace alone covers no more (regions add only the furniture they\n"
-                "# enclose; no region reaches a room the tour does not)\n",
-                totals.ceilingMeans / n);
+                "# enclose; no region reaches a room the tour does not). furniture_share_mean=%.3f: the share\n"
+                "# under furniture (free in X.png, not in X_furnitures.png)\n",
+                totals.ceilingMeans / n, totals.furnitureMeans / n);
     std::printf("# objects=%zu on_furniture=%.3f furniture_found=%.3f (RG Map rectangles vs furniture blobs >= %d "
                 "cells, ObjectScoring.h)\n", totals.objects.objects,
                 ratio(totals.objects.onFurniture, totals.objects.objects),
