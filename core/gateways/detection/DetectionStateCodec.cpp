@@ -13,7 +13,7 @@ namespace {
 using nlohmann::json;
 
 constexpr const char* kFormat = "rgnav-gateway-detection";
-constexpr int kVersion = 2;
+constexpr int kVersion = 3;
 
 template <class T, class F>
 json list(const std::vector<T>& items, F&& write) {
@@ -39,7 +39,8 @@ GatewayPoints gatewayPoints(const json& j) {
 json trackedGateway(const TrackedGateway& g) {
   return {{"id", g.id}, {"left", jsonPoint(g.left)}, {"right", jsonPoint(g.right)}, {"confidence", g.meanConfidence},
           {"support", g.support}, {"observations", g.observations}, {"first", g.firstScan}, {"last", g.lastScan},
-          {"lastPose", jsonPose(g.lastRobotPose)}, {"confirmed", g.confirmed}, {"traversals", g.traversals}};
+          {"lastPose", jsonPose(g.lastRobotPose)}, {"confirmed", g.confirmed}, {"superseded", g.superseded},
+          {"traversals", g.traversals}};
 }
 TrackedGateway trackedGateway(const json& j) {
   TrackedGateway g;
@@ -53,6 +54,7 @@ TrackedGateway trackedGateway(const json& j) {
   g.lastScan = j.at("last");
   g.lastRobotPose = poseFrom(j.at("lastPose"));
   g.confirmed = j.at("confirmed");
+  g.superseded = j.at("superseded");
   g.traversals = j.at("traversals");
   return g;
 }

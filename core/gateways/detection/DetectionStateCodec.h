@@ -1,6 +1,7 @@
 // The GatewayDetection module's checkpoint: the detector's whole state (GatewayDetector.h) and
-// the event buffer, as versioned JSON ({"format": "rgnav-gateway-detection", "version": 2, ...};
-// version 2 added the coasted observations of running sequences).
+// the event buffer, as versioned JSON ({"format": "rgnav-gateway-detection", "version": 3, ...};
+// version 2 added the coasted observations of running sequences, version 3 the superseded flag of
+// passage tracks).
 // Numbers are written in the shortest form that reads back to the same double, so a module that
 // resumes from a checkpoint goes on bit for bit as if it had not stopped.
 #pragma once

@@ -65,7 +65,7 @@ GatewayRecord GatewayDetector::passageRecord(const TrackedGateway& track, Gatewa
   GatewayRecord r;
   r.id = id;
   r.kind = GatewayKind::NarrowPassage;
-  r.classes = {{kNarrowPassageClass, track.meanConfidence}};
+  r.classes = {{track.superseded ? kWiderTwinClass : kNarrowPassageClass, track.meanConfidence}};
   r.gatewayPoints = {track.left, track.right};
   // P_right -> P_left turned right points away from the side the passage was first seen from.
   const Eigen::Vector2d along = (track.left - track.right).normalized();
@@ -118,6 +118,8 @@ void GatewayDetector::detectPassages(const LaserScan& scan, const Pose2D& robotP
     const GatewayId id = passageIds_[track] = nextGatewayId_++;
     out.push_back(event(GatewayEventKind::Detected, passageRecord(*passageTracker_.find(track), id)));
   }
+  for (const GatewayId track : update.superseded)
+    out.push_back(event(GatewayEventKind::Updated, passageRecord(*passageTracker_.find(track), passageIds_.at(track))));
   for (const GatewayTraversal& t : update.traversals) {
     const TrackedGateway& track = *passageTracker_.find(t.gateway);
     GatewayRecord record = passageRecord(track, passageIds_.at(t.gateway));

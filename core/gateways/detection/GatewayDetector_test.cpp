@@ -247,7 +247,7 @@ class GatewayDetectorTest : public CppUnit::TestFixture {
     CPPUNIT_ASSERT_THROW(deserializeDetection(good.substr(0, good.size() / 2)), FormatError);
     CPPUNIT_ASSERT_THROW(deserializeDetection("{\"format\": \"something else\"}"), FormatError);
     std::string otherVersion = good;
-    otherVersion.replace(otherVersion.find("\"version\":2"), 11, "\"version\":9");
+    otherVersion.replace(otherVersion.find("\"version\":3"), 11, "\"version\":9");
     CPPUNIT_ASSERT_THROW(deserializeDetection(otherVersion), FormatError);
   }
 };

@@ -6,6 +6,7 @@
 namespace rgnav {
 
 bool GatewayRecord::isTransition() const {
+  if (label() == kWiderTwinClass) return false;
   const std::optional<GatewayClass> hallwayClass = parseGatewayClass(label());
   return !hallwayClass || rgnav::isTransition(*hallwayClass);
 }

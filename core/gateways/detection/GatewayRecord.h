@@ -29,9 +29,12 @@ using GatewayEventId = std::uint64_t;
 enum class GatewayKind { NarrowPassage, HallwayArea };
 
 inline constexpr const char* kNarrowPassageClass = "Narrow-Passage";
+// A narrow passage superseded by a narrower one it shares a gateway point with, the same opening
+// seen askew (PassageTracker.h): no transition.
+inline constexpr const char* kWiderTwinClass = "Wider-Twin";
 
 struct ClassProbability {
-  std::string name;  // "Narrow-Passage", or a GatewayClass name ("X-Crossing", ...)
+  std::string name;  // "Narrow-Passage", "Wider-Twin", or a GatewayClass name ("X-Crossing", ...)
   double probability = 0.0;
 
   friend bool operator==(const ClassProbability&, const ClassProbability&) = default;
@@ -56,8 +59,8 @@ struct GatewayRecord {
   std::size_t traversals = 0;
 
   const std::string& label() const { return classes.front().name; }
-  // False when the most probable class is a counter-class (Deadend, Hallway): the evidence says
-  // this is no transition between regions.
+  // False when the most probable class is a counter-class (Deadend, Hallway) or Wider-Twin: the
+  // evidence says this is no transition between regions.
   bool isTransition() const;
 
   friend bool operator==(const GatewayRecord&, const GatewayRecord&) = default;

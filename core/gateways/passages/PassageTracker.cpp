@@ -20,6 +20,17 @@ bool leftOf(const TrackedGateway& g, const Eigen::Vector2d& p) {
   return d.x() * q.y() - d.y() * q.x() > 0.0;
 }
 
+// Whether `wider` is a wider twin of `narrower` (see PassageTracker.h).
+bool widerTwin(const TrackedGateway& wider, const TrackedGateway& narrower, const PassageTrackerConfig& config) {
+  if (wider.widthM() < config.twinWidthFactor * narrower.widthM()) return false;
+  bool shared = false;
+  for (const Eigen::Vector2d& p : {wider.left, wider.right})
+    for (const Eigen::Vector2d& q : {narrower.left, narrower.right}) shared = shared || (p - q).norm() <= config.sharedPointM;
+  if (!shared) return false;
+  const Eigen::Vector2d a = (wider.left - wider.right).normalized(), b = (narrower.left - narrower.right).normalized();
+  return std::abs(a.dot(b)) >= std::cos(config.twinMaxAngleRad);
+}
+
 }  // namespace
 
 void validate(const PassageTrackerConfig& config) {
@@ -27,6 +38,12 @@ void validate(const PassageTrackerConfig& config) {
     throw ConfigError("passage tracker: associationDistanceM must be positive and finite");
   if (config.minSupport == 0) throw ConfigError("passage tracker: minSupport must be at least 1");
   if (config.forgetAfterUpdates == 0) throw ConfigError("passage tracker: forgetAfterUpdates must be at least 1");
+  if (!std::isfinite(config.sharedPointM) || config.sharedPointM < 0.0)
+    throw ConfigError("passage tracker: sharedPointM must be >= 0 and finite");
+  if (!(config.twinMaxAngleRad >= 0.0 && config.twinMaxAngleRad <= M_PI / 2.0))
+    throw ConfigError("passage tracker: twinMaxAngleRad must lie in [0, pi/2]");
+  if (!std::isfinite(config.twinWidthFactor) || config.twinWidthFactor < 1.0)
+    throw ConfigError("passage tracker: twinWidthFactor must be >= 1 and finite");
 }
 
 PassageTracker::PassageTracker(const PassageTrackerConfig& config) : config_(config) { validate(config_); }
@@ -42,6 +59,7 @@ TrackerUpdate PassageTracker::update(DataId scanId, const Pose2D& robotPose,
   TrackerUpdate out;
   traverse(scanId, robotPose, out);
   for (const PassageHypothesis& h : hypotheses) associate(h, robotPose, out);
+  supersedeWiderTwins(out);
   std::erase_if(state_.tracks, [&](const PassageTrackState& t) {
     return !t.gateway.confirmed && state_.updates - t.lastUpdate >= config_.forgetAfterUpdates;
   });
@@ -55,7 +73,7 @@ void PassageTracker::traverse(DataId scanId, const Pose2D& robotPose, TrackerUpd
   const Eigen::Vector2d from(last->x, last->y), to(robotPose.x, robotPose.y);
   for (PassageTrackState& t : state_.tracks) {
     TrackedGateway& g = t.gateway;
-    if (!g.confirmed) continue;
+    if (!g.confirmed || g.superseded) continue;
     const auto at = segmentCrossing(from, to, g.left, g.right);
     if (!at) continue;
     ++g.traversals;
@@ -102,6 +120,26 @@ void PassageTracker::associate(const PassageHypothesis& h, const Pose2D& robotPo
   }
 }
 
+void PassageTracker::supersedeWiderTwins(TrackerUpdate& out) {
+  std::vector<TrackedGateway*> doors;
+  for (PassageTrackState& t : state_.tracks)
+    if (t.gateway.confirmed && !t.gateway.superseded) doors.push_back(&t.gateway);
+  // Narrowest first, so that a twin is judged against the doors that stay.
+  std::stable_sort(doors.begin(), doors.end(),
+                   [](const TrackedGateway* a, const TrackedGateway* b) { return a->widthM() < b->widthM(); });
+  for (std::size_t k = 0; k < doors.size(); ++k) {
+    TrackedGateway& g = *doors[k];
+    for (std::size_t n = 0; n < k && !g.superseded; ++n)
+      g.superseded = !doors[n]->superseded && widerTwin(g, *doors[n], config_);
+    if (!g.superseded) continue;
+    const auto justConfirmed = std::find(out.confirmed.begin(), out.confirmed.end(), g.id);
+    if (justConfirmed != out.confirmed.end())
+      out.confirmed.erase(justConfirmed);
+    else
+      out.superseded.push_back(g.id);
+  }
+}
+
 std::vector<TrackedGateway> PassageTracker::tracks() const {
   std::vector<TrackedGateway> all;
   for (const PassageTrackState& t : state_.tracks) all.push_back(t.gateway);
@@ -111,7 +149,7 @@ std::vector<TrackedGateway> PassageTracker::tracks() const {
 std::vector<TrackedGateway> PassageTracker::gateways() const {
   std::vector<TrackedGateway> confirmed;
   for (const PassageTrackState& t : state_.tracks)
-    if (t.gateway.confirmed) confirmed.push_back(t.gateway);
+    if (t.gateway.confirmed && !t.gateway.superseded) confirmed.push_back(t.gateway);
   return confirmed;
 }
 

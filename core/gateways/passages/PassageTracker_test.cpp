@@ -1,10 +1,15 @@
 // Tests the passage tracker: hypotheses of consecutive scans are associated by gateway-point
 // distance (in either order), support counts scans, a gateway is confirmed at minSupport scans,
 // unconfirmed tracks are forgotten, and a traversal is reported when the robot's path crosses a
-// confirmed gateway, with its direction.
+// confirmed gateway, with its direction; a wider twin of a confirmed door (a shared gateway point,
+// a similar direction) is superseded, whichever was confirmed first, and reports no traversal,
+// while a different opening sharing the jamb (across it, or hardly wider) stays.
 #include "core/gateways/passages/PassageTracker.h"
 
 #include <cppunit/extensions/HelperMacros.h>
+
+#include <cmath>
+#include <vector>
 
 #include "core/common/Errors.h"
 
@@ -28,6 +33,22 @@ PassageHypothesis door(rgnav::DataId scan, double noise = 0.0) {
   return h;
 }
 
+// A passage from the door's left jamb (2, 0.45) to a point `lengthM` away at `angleDeg` from the
+// door's line, into the room beyond it (x > 2).
+PassageHypothesis fromLeftJamb(rgnav::DataId scan, double lengthM, double angleDeg) {
+  PassageHypothesis h = door(scan);
+  const double a = angleDeg * M_PI / 180.0;
+  h.right = h.left + lengthM * Vector2d(std::sin(a), -std::cos(a));
+  h.widthM = lengthM;
+  return h;
+}
+
+// The slanted line from the jamb to a cabinet's corner inside the room: twice the door's width.
+PassageHypothesis twin(rgnav::DataId scan) { return fromLeftJamb(scan, 1.8, 30.0); }
+
+// A robot step that crosses the twin's line and not the door's.
+const Pose2D kBesideTwin{2.3, -1.2, 0.0}, kThroughTwin{2.8, -0.2, 0.0};
+
 }  // namespace
 
 class PassageTrackerTest : public CppUnit::TestFixture {
@@ -38,6 +59,9 @@ class PassageTrackerTest : public CppUnit::TestFixture {
   CPPUNIT_TEST(unconfirmedTracksAreForgotten);
   CPPUNIT_TEST(traversalsAreReportedWithTheirDirection);
   CPPUNIT_TEST(unconfirmedPassagesAreNotTraversed);
+  CPPUNIT_TEST(twinConfirmedWithTheDoorIsNeverReported);
+  CPPUNIT_TEST(twinConfirmedBeforeTheDoorIsSuperseded);
+  CPPUNIT_TEST(otherOpeningsAtTheJambStay);
   CPPUNIT_TEST(badConfigurationsAreTypedErrors);
   CPPUNIT_TEST_SUITE_END();
 
@@ -119,10 +143,49 @@ class PassageTrackerTest : public CppUnit::TestFixture {
     CPPUNIT_ASSERT(tracker.update(2, {3.0, 0.0, 0.0}, {}).traversals.empty());
   }
 
+  void twinConfirmedWithTheDoorIsNeverReported() {
+    PassageTracker tracker({0.3, 2, 50});
+    tracker.update(1, kBesideTwin, {door(1), twin(1)});
+    const auto confirmed = tracker.update(2, kBesideTwin, {twin(2), door(2)});
+    CPPUNIT_ASSERT_EQUAL(std::size_t(1), confirmed.confirmed.size());
+    CPPUNIT_ASSERT(confirmed.superseded.empty());
+    CPPUNIT_ASSERT_EQUAL(std::size_t(1), tracker.gateways().size());
+    CPPUNIT_ASSERT_EQUAL(confirmed.confirmed[0], tracker.gateways()[0].id);
+    CPPUNIT_ASSERT_DOUBLES_EQUAL(0.9, tracker.gateways()[0].widthM(), 1e-9);
+    CPPUNIT_ASSERT(tracker.update(3, kThroughTwin, {}).traversals.empty());
+  }
+
+  void twinConfirmedBeforeTheDoorIsSuperseded() {
+    PassageTracker tracker({0.3, 2, 50});
+    tracker.update(1, kBesideTwin, {twin(1)});
+    const rgnav::GatewayId twinId = tracker.update(2, kBesideTwin, {twin(2)}).confirmed.at(0);
+    CPPUNIT_ASSERT_EQUAL(std::size_t(1), tracker.update(3, kThroughTwin, {}).traversals.size());
+    tracker.update(4, kBesideTwin, {door(4)});
+    const auto update = tracker.update(5, kBesideTwin, {door(5)});
+    CPPUNIT_ASSERT_EQUAL(std::size_t(1), update.confirmed.size());
+    CPPUNIT_ASSERT(update.confirmed[0] != twinId);
+    CPPUNIT_ASSERT(update.superseded == std::vector<rgnav::GatewayId>{twinId});
+    CPPUNIT_ASSERT(tracker.find(twinId)->superseded);
+    CPPUNIT_ASSERT(tracker.update(6, kThroughTwin, {twin(6)}).traversals.empty());
+    CPPUNIT_ASSERT(tracker.update(7, kBesideTwin, {twin(7), door(7)}).superseded.empty());  // once
+    CPPUNIT_ASSERT_EQUAL(std::size_t(1), tracker.gateways().size());
+  }
+
+  void otherOpeningsAtTheJambStay() {
+    PassageTracker tracker({0.3, 1, 50});
+    const auto update = tracker.update(1, {}, {door(1), fromLeftJamb(1, 1.3, 90.0), fromLeftJamb(1, 1.0, 30.0)});
+    CPPUNIT_ASSERT_EQUAL(std::size_t(3), update.confirmed.size());  // across the jamb; only 11 % wider
+    CPPUNIT_ASSERT(update.superseded.empty());
+    CPPUNIT_ASSERT_EQUAL(std::size_t(3), tracker.gateways().size());
+  }
+
   void badConfigurationsAreTypedErrors() {
     CPPUNIT_ASSERT_THROW(PassageTracker({0.0, 3, 50}), rgnav::ConfigError);
     CPPUNIT_ASSERT_THROW(PassageTracker({0.3, 0, 50}), rgnav::ConfigError);
     CPPUNIT_ASSERT_THROW(PassageTracker({0.3, 3, 0}), rgnav::ConfigError);
+    CPPUNIT_ASSERT_THROW(PassageTracker({0.3, 3, 50, -0.1}), rgnav::ConfigError);
+    CPPUNIT_ASSERT_THROW(PassageTracker({0.3, 3, 50, 0.25, 2.0}), rgnav::ConfigError);
+    CPPUNIT_ASSERT_THROW(PassageTracker({0.3, 3, 50, 0.25, 1.0, 0.9}), rgnav::ConfigError);
   }
 };
 

@@ -111,6 +111,7 @@ class RgMapLoopsTest : public CppUnit::TestFixture {
   CPPUNIT_TEST(doorDetectedAnewClosesTheRing);
   CPPUNIT_TEST(doorSeenThroughAnotherDoorClosesNothing);
   CPPUNIT_TEST(noTransitionAfterAllIsDropped);
+  CPPUNIT_TEST(traversedWiderTwinJoinsItsSides);
   CPPUNIT_TEST_SUITE_END();
 
  public:
@@ -290,6 +291,25 @@ class RgMapLoopsTest : public CppUnit::TestFixture {
     CPPUNIT_ASSERT(k.state().gateways.empty());
     CPPUNIT_ASSERT(k.state().regions.at(1).gateways.empty());
     CPPUNIT_ASSERT_EQUAL(RgMapEventKind::GatewayDropped, k.state().events.back().kind);
+    CPPUNIT_ASSERT(k.checkConsistency().empty());
+  }
+
+  void traversedWiderTwinJoinsItsSides() {
+    const std::vector<KernelInput> inputs = rgnav::testing::ringTour().inputs();
+    RgMappingKernel k;
+    const std::size_t traversed = nextEvent(inputs, 0, GatewayEventKind::Traversed);
+    feedAll(k, inputs, 0, traversed + 1);
+    CPPUNIT_ASSERT_EQUAL(std::size_t(2), k.state().regions.size());
+    // The detector finds the door beside it: this passage was the same opening seen askew.
+    GatewayEvent update = *inputs[traversed].event;
+    update.id += 1000;
+    update.kind = GatewayEventKind::Updated;
+    update.gateway.classes = {{kWiderTwinClass, 0.9}};
+    k.addGatewayEvent(update, inputs[traversed].lastScanCorrected);
+    CPPUNIT_ASSERT_EQUAL(std::size_t(1), k.state().regions.size());
+    const Gateway& twin = k.state().gateways.begin()->second;
+    CPPUNIT_ASSERT(twin.neutralised);
+    CPPUNIT_ASSERT_EQUAL(std::string(kWiderTwinClass), twin.record.label());
     CPPUNIT_ASSERT(k.checkConsistency().empty());
   }
 };

@@ -67,7 +67,8 @@
 // ScanMapper does). A hallway area joins at most two regions here: the side of its first
 // traversal's start and the side that traversal went to; traversals through its further sides
 // change no structure. Labels that are no transition
-// (Deadend, Hallway) drop a gateway that was never traversed; one that was traversed keeps the
+// (Deadend, Hallway, and Wider-Twin for a passage beside a door, PassageTracker.h) drop a gateway
+// that was never traversed; one that was traversed keeps the
 // label and joins nothing: the regions on its two sides are merged (it is neutralised).
 // The final description is computed when first asked for (a checkpoint does not hold it), not at
 // finalisation, so that a region that cannot be described never blocks the structuring.

@@ -5,6 +5,7 @@
 #include <cstdio>
 #include <map>
 
+#include "core/gateways/detection/GatewayRecord.h"
 #include "core/lines/ScanPoints.h"
 
 namespace rgnav {
@@ -84,7 +85,8 @@ void printGateways(const MappingRun& run) {
     const Eigen::Vector2d a = transformPoint(run.mapToWorld, g.gatewayPoints.front());
     const Eigen::Vector2d b = transformPoint(run.mapToWorld, g.gatewayPoints[g.gatewayPoints.size() / 2]);
     std::printf("#   gateway %3llu (%s) (%6.2f, %6.2f)-(%6.2f, %6.2f): regions %llu|%llu, traversals %zu%s\n", ULL(g.id),
-                g.door ? "door" : g.classes.front().name.c_str(), a.x(), a.y(), b.x(), b.y(), ULL(g.sideA),
+                g.classes.front().name == kNarrowPassageClass ? "door" : g.classes.front().name.c_str(), a.x(), a.y(),
+                b.x(), b.y(), ULL(g.sideA),
                 ULL(g.sideB), g.traversals, g.neutralised ? ", neutralised" : "");
   }
 }
