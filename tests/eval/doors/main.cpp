@@ -148,10 +148,13 @@ void printHeader(const Options& options) {
   std::printf("# scans at their TRUE poses (detection is evaluated, not SLAM); detector on 1 of every %zu scans;\n"
               "# D_lr in (%.2f, %.2f) m, D_NP < %.1f m, alpha_NP >= %.0f deg, viewing directions every %.0f deg;\n"
               "# gateway points bound surfaces >= %.2f m, one a wall end continuing the line >= %.2f m;\n"
-              "# a gateway: seen in %zu scans, hypotheses associated within %.2f m\n",
+              "# a gateway: seen in %zu scans, hypotheses associated within %.2f m, not a wider twin (a point\n"
+              "# within %.2f m of a narrower gateway's, within %.0f deg of its direction, >= %.2f times as wide)\n",
               options.setup.everyScans, minPassageWidthM(d), d.maxDoorWidthM, d.maxDistanceM,
               d.minApertureRad * 180.0 / M_PI, d.viewingStepRad * 180.0 / M_PI, d.minJambLengthM,
-              d.minWallEndLengthM, options.setup.tracker.minSupport, options.setup.tracker.associationDistanceM);
+              d.minWallEndLengthM, options.setup.tracker.minSupport, options.setup.tracker.associationDistanceM,
+              options.setup.tracker.sharedPointM, options.setup.tracker.twinMaxAngleRad * 180.0 / M_PI,
+              options.setup.tracker.twinWidthFactor);
   std::printf("# GT doors: separator lines of X_gt_segmentation.png with two different rooms beside them (else\n"
               "# no-pair), door-like and a narrowing: at most %.1f m wide and narrower than %.0f %% of the free space\n"
               "# beside them, %.1f m off the line on X.png (else wide), both rooms reachable by the tour (else unrch)\n"
