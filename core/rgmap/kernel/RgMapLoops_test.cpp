@@ -36,6 +36,15 @@ void feedAll(RgMappingKernel& k, const std::vector<KernelInput>& inputs, std::si
 }
 
 // The index of the first input after `from` that is a gateway event of `kind`.
+// The detector's update of the gateway of `input`'s event: now labelled `classes`.
+void relabel(RgMappingKernel& k, const KernelInput& input, std::vector<ClassProbability> classes) {
+  GatewayEvent update = *input.event;
+  update.id += 1000;
+  update.kind = GatewayEventKind::Updated;
+  update.gateway.classes = std::move(classes);
+  k.addGatewayEvent(update, input.lastScanCorrected);
+}
+
 std::size_t nextEvent(const std::vector<KernelInput>& inputs, std::size_t from, GatewayEventKind kind) {
   for (std::size_t i = from; i < inputs.size(); ++i)
     if (inputs[i].event && inputs[i].event->kind == kind) return i;
@@ -283,11 +292,7 @@ class RgMapLoopsTest : public CppUnit::TestFixture {
     feedAll(k, inputs, 0, detected + 1);
     CPPUNIT_ASSERT_EQUAL(std::size_t(1), k.state().gateways.size());
     // The detector changes its mind before the robot gets there: a dead end, not a gateway.
-    GatewayEvent update = *inputs[detected].event;
-    update.id += 1000;
-    update.kind = GatewayEventKind::Updated;
-    update.gateway.classes = {{"Deadend", 0.9}, {kNarrowPassageClass, 0.1}};
-    k.addGatewayEvent(update, inputs[detected].lastScanCorrected);
+    relabel(k, inputs[detected], {{"Deadend", 0.9}, {kNarrowPassageClass, 0.1}});
     CPPUNIT_ASSERT(k.state().gateways.empty());
     CPPUNIT_ASSERT(k.state().regions.at(1).gateways.empty());
     CPPUNIT_ASSERT_EQUAL(RgMapEventKind::GatewayDropped, k.state().events.back().kind);
@@ -301,11 +306,7 @@ class RgMapLoopsTest : public CppUnit::TestFixture {
     feedAll(k, inputs, 0, traversed + 1);
     CPPUNIT_ASSERT_EQUAL(std::size_t(2), k.state().regions.size());
     // The detector finds the door beside it: this passage was the same opening seen askew.
-    GatewayEvent update = *inputs[traversed].event;
-    update.id += 1000;
-    update.kind = GatewayEventKind::Updated;
-    update.gateway.classes = {{kWiderTwinClass, 0.9}};
-    k.addGatewayEvent(update, inputs[traversed].lastScanCorrected);
+    relabel(k, inputs[traversed], {{kWiderTwinClass, 0.9}});
     CPPUNIT_ASSERT_EQUAL(std::size_t(1), k.state().regions.size());
     const Gateway& twin = k.state().gateways.begin()->second;
     CPPUNIT_ASSERT(twin.neutralised);
