@@ -54,7 +54,7 @@ TrackedGateway trackedGateway(const json& j) {
   g.lastScan = j.at("last");
   g.lastRobotPose = poseFrom(j.at("lastPose"));
   g.confirmed = j.at("confirmed");
-  g.superseded = j.at("superseded");
+  g.superseded = j.value("superseded", false);  // version 2 had no superseded track
   g.traversals = j.at("traversals");
   return g;
 }
@@ -202,8 +202,9 @@ DetectionCheckpoint deserializeDetection(const std::string& text) {
   try {
     const json j = json::parse(text);
     if (j.at("format") != kFormat) throw FormatError("<checkpoint>", 0, "not a gateway detection checkpoint");
-    if (j.at("version") != kVersion)
-      throw FormatError("<checkpoint>", 0, "version " + j.at("version").dump() + ", this program reads " + std::to_string(kVersion));
+    if (j.at("version") != kVersion && j.at("version") != kVersion - 1)
+      throw FormatError("<checkpoint>", 0, "version " + j.at("version").dump() + ", this program reads " +
+                                               std::to_string(kVersion - 1) + " and " + std::to_string(kVersion));
     DetectionCheckpoint c;
     GatewayDetectorState& d = c.detector;
     d.passages = passages(j.at("passages"));

@@ -91,6 +91,7 @@ class GatewayDetectorTest : public CppUnit::TestFixture {
   CPPUNIT_TEST(checkpointKeepsCoasting);
   CPPUNIT_TEST(scansOutOfOrderAreRejected);
   CPPUNIT_TEST(damagedCheckpointIsAFormatError);
+  CPPUNIT_TEST(versionTwoCheckpointReads);
   CPPUNIT_TEST_SUITE_END();
 
  public:
@@ -249,6 +250,18 @@ class GatewayDetectorTest : public CppUnit::TestFixture {
     std::string otherVersion = good;
     otherVersion.replace(otherVersion.find("\"version\":3"), 11, "\"version\":9");
     CPPUNIT_ASSERT_THROW(deserializeDetection(otherVersion), FormatError);
+  }
+
+  void versionTwoCheckpointReads() {
+    GatewayDetector detector({}, std::nullopt);
+    drive(detector, throughTheDoor(), 0, throughTheDoor().size());
+    std::string text = serializeDetection({detector.state(), {}});
+    CPPUNIT_ASSERT(text.find("\"superseded\":false") != std::string::npos);
+    for (std::size_t at = text.find(",\"superseded\":false"); at != std::string::npos;
+         at = text.find(",\"superseded\":false"))
+      text.erase(at, std::string(",\"superseded\":false").size());
+    text.replace(text.find("\"version\":3"), 11, "\"version\":2");
+    CPPUNIT_ASSERT_EQUAL(serializeDetection({detector.state(), {}}), serializeDetection(deserializeDetection(text)));
   }
 };
 

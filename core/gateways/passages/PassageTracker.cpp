@@ -132,6 +132,8 @@ void PassageTracker::supersedeWiderTwins(TrackerUpdate& out) {
     for (std::size_t n = 0; n < k && !g.superseded; ++n)
       g.superseded = !doors[n]->superseded && widerTwin(g, *doors[n], config_);
     if (!g.superseded) continue;
+    // A traversal found earlier in this update (traverse() runs first) was no passage after all.
+    g.traversals -= std::size_t(std::erase_if(out.traversals, [&](const GatewayTraversal& t) { return t.gateway == g.id; }));
     const auto justConfirmed = std::find(out.confirmed.begin(), out.confirmed.end(), g.id);
     if (justConfirmed != out.confirmed.end())
       out.confirmed.erase(justConfirmed);

@@ -15,9 +15,11 @@
 //     twinWidthFactor times as wide is the same opening seen askew: the line from a door's jamb
 //     to the corner of a cabinet or wall just inside the room. The detector keeps the narrowest of
 //     the pairs it sees in one scan (NarrowPassageDetector.h, the thesis' minimum-width rule);
-//     this carries the rule across scans, where the two were seen from different places. The
-//     wider one is superseded for good: it is no door, reports no traversal, and one confirmed
-//     in the same update is not reported at all. Lines at a larger angle are different openings
+//     this carries the rule across scans, where the two were seen from different places. Only a
+//     door that is not superseded itself supersedes (narrowest first), and the wider one is
+//     superseded for good, also if its door is superseded later: it is no door, reports no
+//     traversal (not even one in the update that supersedes it), and one confirmed in the same
+//     update is not reported at all. Lines at a larger angle are different openings
 //     that share a wall's end (a partition's end with a door beside it, lab_b), so they stay.
 //     Ten furnished IPA maps: rgnav-eval-doors precision 0.537 -> 0.668, recall 0.988 both (of
 //     the traversed gateways 0.564 -> 0.730 doors); rgnav-eval-rooms recall mean 0.865 -> 0.874,
@@ -51,7 +53,8 @@ struct PassageTrackerConfig {
   double twinWidthFactor = 1.15;                 // ... and at least this many times as wide
 };
 
-// Throws ConfigError for a non-positive distance or a zero count.
+// Throws ConfigError for a non-positive association distance, a zero count, a negative shared-point
+// distance, an angle outside [0, pi/2] or a width factor below 1.
 void validate(const PassageTrackerConfig& config);
 
 struct TrackedGateway {

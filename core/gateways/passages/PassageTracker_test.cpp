@@ -61,6 +61,7 @@ class PassageTrackerTest : public CppUnit::TestFixture {
   CPPUNIT_TEST(unconfirmedPassagesAreNotTraversed);
   CPPUNIT_TEST(twinConfirmedWithTheDoorIsNeverReported);
   CPPUNIT_TEST(twinConfirmedBeforeTheDoorIsSuperseded);
+  CPPUNIT_TEST(twinCrossedAsTheDoorIsConfirmedIsNotTraversed);
   CPPUNIT_TEST(otherOpeningsAtTheJambStay);
   CPPUNIT_TEST(badConfigurationsAreTypedErrors);
   CPPUNIT_TEST_SUITE_END();
@@ -171,9 +172,19 @@ class PassageTrackerTest : public CppUnit::TestFixture {
     CPPUNIT_ASSERT_EQUAL(std::size_t(1), tracker.gateways().size());
   }
 
+  void twinCrossedAsTheDoorIsConfirmedIsNotTraversed() {
+    PassageTracker tracker({0.3, 2, 50});
+    tracker.update(1, kBesideTwin, {twin(1)});
+    const rgnav::GatewayId twinId = tracker.update(2, kBesideTwin, {twin(2), door(2)}).confirmed.at(0);
+    const auto update = tracker.update(3, kThroughTwin, {door(3)});  // crosses the twin as the door is confirmed
+    CPPUNIT_ASSERT(update.superseded == std::vector<rgnav::GatewayId>{twinId});
+    CPPUNIT_ASSERT(update.traversals.empty());
+    CPPUNIT_ASSERT_EQUAL(std::size_t(0), tracker.find(twinId)->traversals);
+  }
+
   void otherOpeningsAtTheJambStay() {
     PassageTracker tracker({0.3, 1, 50});
-    const auto update = tracker.update(1, {}, {door(1), fromLeftJamb(1, 1.3, 90.0), fromLeftJamb(1, 1.0, 30.0)});
+    const auto update = tracker.update(1, {}, {door(1), fromLeftJamb(1, 1.3, 100.0), fromLeftJamb(1, 1.0, 30.0)});
     CPPUNIT_ASSERT_EQUAL(std::size_t(3), update.confirmed.size());  // across the jamb; only 11 % wider
     CPPUNIT_ASSERT(update.superseded.empty());
     CPPUNIT_ASSERT_EQUAL(std::size_t(3), tracker.gateways().size());

@@ -35,7 +35,6 @@ void feedAll(RgMappingKernel& k, const std::vector<KernelInput>& inputs, std::si
   CPPUNIT_ASSERT_EQUAL(std::string(), feedChecked(k, inputs, begin, end));
 }
 
-// The index of the first input after `from` that is a gateway event of `kind`.
 // The detector's update of the gateway of `input`'s event: now labelled `classes`.
 void relabel(RgMappingKernel& k, const KernelInput& input, std::vector<ClassProbability> classes) {
   GatewayEvent update = *input.event;
@@ -45,6 +44,7 @@ void relabel(RgMappingKernel& k, const KernelInput& input, std::vector<ClassProb
   k.addGatewayEvent(update, input.lastScanCorrected);
 }
 
+// The index of the first input after `from` that is a gateway event of `kind`.
 std::size_t nextEvent(const std::vector<KernelInput>& inputs, std::size_t from, GatewayEventKind kind) {
   for (std::size_t i = from; i < inputs.size(); ++i)
     if (inputs[i].event && inputs[i].event->kind == kind) return i;
@@ -121,6 +121,8 @@ class RgMapLoopsTest : public CppUnit::TestFixture {
   CPPUNIT_TEST(doorSeenThroughAnotherDoorClosesNothing);
   CPPUNIT_TEST(noTransitionAfterAllIsDropped);
   CPPUNIT_TEST(traversedWiderTwinJoinsItsSides);
+  CPPUNIT_TEST(traversalReportedAsWiderTwinIsTheRelabelling);
+  CPPUNIT_TEST(widerTwinLabelOnAnAliasTakesOnlyTheAlias);
   CPPUNIT_TEST_SUITE_END();
 
  public:
@@ -312,6 +314,38 @@ class RgMapLoopsTest : public CppUnit::TestFixture {
     CPPUNIT_ASSERT(twin.neutralised);
     CPPUNIT_ASSERT_EQUAL(std::string(kWiderTwinClass), twin.record.label());
     CPPUNIT_ASSERT(k.checkConsistency().empty());
+  }
+
+  void traversalReportedAsWiderTwinIsTheRelabelling() {
+    std::vector<KernelInput> inputs = rgnav::testing::ringTour().inputs();
+    const std::size_t traversed = nextEvent(inputs, 0, GatewayEventKind::Traversed);
+    inputs[traversed].event->gateway.classes = {{kWiderTwinClass, 0.9}};  // superseded as it was crossed
+    RgMappingKernel k;
+    feedAll(k, inputs, 0, traversed + 1);
+    CPPUNIT_ASSERT(k.state().gateways.empty());  // never traversed: dropped
+    CPPUNIT_ASSERT_EQUAL(std::size_t(1), k.state().regions.size());
+    CPPUNIT_ASSERT(k.checkConsistency().empty());
+  }
+
+  void widerTwinLabelOnAnAliasTakesOnlyTheAlias() {
+    SyntheticTour tour(rgnav::testing::hallwayWithTwoRooms(), rgnav::testing::kTourDrift);
+    tour.driveThrough({{1, 0.9}, {4, 0.9}, {4, 4.5}, {3, 5}});
+    tour.redetect(11, 111);
+    tour.driveThrough({{4, 4.5}, {4, 0.9}, {1, 0.9}});
+    const std::vector<KernelInput>& inputs = tour.inputs();
+    RgMappingKernel k;
+    feedAll(k, inputs, 0, inputs.size());
+    const auto last111 = std::find_if(inputs.rbegin(), inputs.rend(),
+                                      [](const KernelInput& in) { return in.event && in.event->gateway.id == 111; });
+    CPPUNIT_ASSERT(last111 != inputs.rend());
+    relabel(k, *last111, {{kWiderTwinClass, 0.9}});
+    const RgMapState& s = k.state();
+    CPPUNIT_ASSERT_EQUAL(std::size_t(2), s.regions.size());
+    CPPUNIT_ASSERT_EQUAL(std::size_t(1), s.gateways.size());
+    const Gateway& door = s.gateways.begin()->second;
+    CPPUNIT_ASSERT(door.aliases.empty());
+    CPPUNIT_ASSERT(!door.neutralised);
+    CPPUNIT_ASSERT_EQUAL(std::string(kNarrowPassageClass), door.record.label());
   }
 };
 

@@ -112,7 +112,9 @@ void RgMappingKernel::addGatewayEvent(const GatewayEvent& event, const Pose2D& l
   const DataId scan = event.kind == GatewayEventKind::Traversed ? event.traversal.scanId : event.gateway.lastScan;
   ensureCurrentRegion(lastScanCorrected, scan);
   const Pose2D odomToMap = odometryToMap(event.gateway, lastScanCorrected);
-  if (event.kind == GatewayEventKind::Traversed)
+  // A traversal of a gateway whose label is no transition (a passage superseded in the very scan
+  // the robot crossed it) is taken as the relabelling it is.
+  if (event.kind == GatewayEventKind::Traversed && event.gateway.isTransition())
     traverse(event, odomToMap);
   else
     observe(event, odomToMap, lastScanCorrected);
@@ -135,7 +137,7 @@ std::optional<GatewayId> RgMappingKernel::sameDoorAs(const GatewayRecord& record
   std::optional<GatewayId> nearest;
   double nearestM = config_.sameDoorM;
   for (const auto& [id, g] : state_.gateways) {
-    if (!g.door()) continue;
+    if (!g.door() || !g.record.isTransition()) continue;
     const PlacedGateway known = placeGateway(g);
     const double d = passageEndsDistance(known.gatewayPoints[0], known.gatewayPoints[1], placed.gatewayPoints[0],
                                          placed.gatewayPoints[1])
@@ -201,7 +203,11 @@ void RgMappingKernel::observe(const GatewayEvent& event, const Pose2D& odomToMap
   if (!record.isTransition()) {
     const std::optional<GatewayId> known = findGateway(record.id);
     if (!known) return;
-    const Gateway& g = state_.gateways.at(*known);
+    Gateway& g = state_.gateways.at(*known);
+    if (g.record.id != record.id) {  // an alias: only that track is no gateway, not the door it was matched to
+      std::erase(g.aliases, record.id);
+      return;
+    }
     if (g.traversalsFrom[kSideA] + g.traversalsFrom[kSideB] == 0) {
       dropGateway(state_, *known, scan);
       return;

@@ -68,8 +68,11 @@
 // traversal's start and the side that traversal went to; traversals through its further sides
 // change no structure. Labels that are no transition
 // (Deadend, Hallway, and Wider-Twin for a passage beside a door, PassageTracker.h) drop a gateway
-// that was never traversed; one that was traversed keeps the
-// label and joins nothing: the regions on its two sides are merged (it is neutralised).
+// that was never traversed; one that was traversed keeps the label and joins nothing: the regions
+// on its two sides are merged (it is neutralised). A traversal reported with such a label is taken
+// as the relabelling (the detector may relabel a gateway in the scan the robot crosses it). Such a
+// label on a detector ID that is an alias of a known door takes only the alias away, and no new
+// ID becomes an alias of a gateway so labelled.
 // The final description is computed when first asked for (a checkpoint does not hold it), not at
 // finalisation, so that a region that cannot be described never blocks the structuring.
 #pragma once

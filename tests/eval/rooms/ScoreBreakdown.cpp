@@ -4,6 +4,8 @@
 #include <map>
 #include <vector>
 
+#include "core/common/Errors.h"
+
 namespace rgnav {
 
 ScoreBreakdown breakDownScore(const GroundTruth& truth, const OccupancyGrid& world,
@@ -63,6 +65,8 @@ ScoreBreakdown breakDownScore(const GroundTruth& truth, const OccupancyGrid& wor
 }
 
 double furnitureShareMean(const GroundTruth& truth, const OccupancyGrid& world, const OccupancyGrid& empty) {
+  if (world.cells().size() != truth.labels.size() || empty.cells().size() != truth.labels.size())
+    throw InvalidArgumentError("furnitureShareMean: the floor plans and the ground truth differ in size");
   const auto rooms = std::size_t(truth.roomCount);
   std::vector<double> pixels(rooms, 0.0), furniture(rooms, 0.0);
   for (std::size_t i = 0; i < truth.labels.size(); ++i) {

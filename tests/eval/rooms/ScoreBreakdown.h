@@ -42,6 +42,7 @@ ScoreBreakdown breakDownScore(const GroundTruth& truth, const OccupancyGrid& wor
 // The mean share of each ground-truth room's pixels that furniture covers: free in `empty` (the
 // floor plan without furniture) and not in `world` (the furnished one). The rooms of the ground
 // truth include it; no laser sees under it, and of furniture against a wall not even its back.
+// Throws InvalidArgumentError if a floor plan differs in size from the ground truth.
 double furnitureShareMean(const GroundTruth& truth, const OccupancyGrid& world, const OccupancyGrid& empty);
 
 }  // namespace rgnav

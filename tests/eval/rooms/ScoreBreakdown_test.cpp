@@ -1,7 +1,9 @@
 // Tests furnitureShareMean (ScoreBreakdown.h): the share of each room's pixels free in the empty
-// floor plan and not in the furnished one, averaged over the rooms; pixels of no room do not count.
+// floor plan and not in the furnished one, averaged over the rooms; pixels of no room do not count;
+// a floor plan of another size is refused.
 #include <cppunit/extensions/HelperMacros.h>
 
+#include "core/common/Errors.h"
 #include "tests/eval/rooms/ScoreBreakdown.h"
 
 class ScoreBreakdownTest : public CppUnit::TestFixture {
@@ -25,6 +27,8 @@ class ScoreBreakdownTest : public CppUnit::TestFixture {
     CPPUNIT_ASSERT_DOUBLES_EQUAL(0.125, rgnav::furnitureShareMean(truth, furnished, empty), 1e-12);
     furnished.set({6, 0}, rgnav::Cell::Occupied);  // half of room 1
     CPPUNIT_ASSERT_DOUBLES_EQUAL(0.375, rgnav::furnitureShareMean(truth, furnished, empty), 1e-12);
+    CPPUNIT_ASSERT_THROW(rgnav::furnitureShareMean(truth, furnished, rgnav::OccupancyGrid(7, 1, 0.05)),
+                         rgnav::InvalidArgumentError);
   }
 };
 
