@@ -114,12 +114,14 @@ std::vector<GatewayEvent> GatewayDetector::addScan(const LaserScan& scan, const 
 
 void GatewayDetector::detectPassages(const LaserScan& scan, const Pose2D& robotPose, std::vector<GatewayEvent>& out) {
   const TrackerUpdate update = passageTracker_.update(scan.id, robotPose, passageDetector_.detect(scan, robotPose));
+  // Wider twins first: a consumer that matches a new door to known ones by position (the RG
+  // mapping kernel) then knows the twin for what it is before it sees the door that superseded it.
+  for (const GatewayId track : update.superseded)
+    out.push_back(event(GatewayEventKind::Updated, passageRecord(*passageTracker_.find(track), passageIds_.at(track))));
   for (const GatewayId track : update.confirmed) {
     const GatewayId id = passageIds_[track] = nextGatewayId_++;
     out.push_back(event(GatewayEventKind::Detected, passageRecord(*passageTracker_.find(track), id)));
   }
-  for (const GatewayId track : update.superseded)
-    out.push_back(event(GatewayEventKind::Updated, passageRecord(*passageTracker_.find(track), passageIds_.at(track))));
   for (const GatewayTraversal& t : update.traversals) {
     const TrackedGateway& track = *passageTracker_.find(t.gateway);
     GatewayRecord record = passageRecord(track, passageIds_.at(t.gateway));
