@@ -61,6 +61,17 @@ std::vector<GatewaySegment> otherDoorLines(const RgMapState& state, const Region
   return out;
 }
 
+std::vector<GatewaySegment> otherAreaLines(const RgMapState& state, const Region& region) {
+  std::vector<GatewaySegment> out;
+  for (const auto& [id, gateway] : state.gateways) {
+    const RegionId a = gateway.sides[kSideA].region, b = gateway.sides[kSideB].region;
+    if (gateway.door() || gateway.neutralised || a == 0 || b == 0 || a == region.id || b == region.id) continue;
+    const std::vector<Eigen::Vector2d> corners = placeGateway(gateway, region.frame).gatewayPoints;
+    for (std::size_t k = 0; k < corners.size(); ++k) out.push_back({corners[k], corners[(k + 1) % corners.size()]});
+  }
+  return out;
+}
+
 std::vector<OwnDoor> ownDoors(const RgMapState& state, const Region& region) {
   std::vector<OwnDoor> out;
   for (GatewayId id : region.gateways) {
@@ -145,6 +156,8 @@ RegionModels::Model& RegionModels::upToDate(const RgMapState& state, RegionId id
   const std::vector<GatewaySegment> others =
       otherDoorLines(state, r, config_.unattachedDoors, config_.evidence.freespace.noReturnFreeRangeM);
   cutting.insert(cutting.end(), others.begin(), others.end());
+  const std::vector<GatewaySegment> areas = otherAreaLines(state, r);
+  cutting.insert(cutting.end(), areas.begin(), areas.end());
   const std::vector<OwnDoor> doors = ownDoors(state, r);
   const std::vector<GatewaySegment> frames = doorFrameLines(doors, config_.doorFrames);
   cutting.insert(cutting.end(), frames.begin(), frames.end());

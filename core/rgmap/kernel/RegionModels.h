@@ -1,11 +1,12 @@
 // RegionModels: the metric description M and the properties P of each region (thesis 2.1.1,
 // 5.2): its 2D line segment map (RegionLineMap) and its RegionDescription, in the region's own
 // frame, computed from the region's aligned scans and its gateway lines (GatewayGeometry.h), its
-// beams cut at the doors between other regions (otherDoorLines) and just beyond its own doors
+// beams cut at the doors between other regions (otherDoorLines), at the squares of the hallway
+// areas between other regions (otherAreaLines) and just beyond its own doors
 // (doorFrameLines), and for scans taken in front of an own door at that door's wall
 // (doorWallLines); scans taken just past its own doors add nothing to its evidence (pastOwnDoor).
 // Both are pure functions of the map state (the region's scans in ID order with their corrected
-// poses, its frame, its gateway lines, the map's doors and, for doors no region is attached to,
+// poses, its frame, its gateway lines, the map's doors and areas and, for doors no region is attached to,
 // the other regions' scans), so they are not part of a checkpoint:
 // a resumed kernel computes the very same ones. They are computed on demand and cached; a cached
 // model remembers its inputs and is reused when they are unchanged, extended scan by scan when the
@@ -81,6 +82,15 @@ std::vector<GatewaySegment> otherDoorLines(const RgMapState& state, const Region
                                           const DoorSideProbe& probe = {},
                                           double noReturnFreeRangeM = FreespaceConfig{}.noReturnFreeRangeM);
 
+// The four sides of the square of every hallway area that joins two regions, neither of them this
+// one (not neutralised), in the region's frame (ours, as otherDoorLines does for doors): a hallway
+// region sees along the hallway through the junctions beyond its own, into the parts of the
+// hallway other regions hold. rgnav-eval-rooms, ten maps: precision mean 0.903 -> 0.908, pooled
+// 0.839 -> 0.846; recall mean 0.874 both, pooled 0.840 -> 0.831 (a ground-truth hallway, one room,
+// is covered less by its best region once that region stops at the next region's junction:
+// office_d 0.913 -> 0.873 pooled).
+std::vector<GatewaySegment> otherAreaLines(const RgMapState& state, const Region& region);
+
 // One of the region's own doors (not neutralised) in the region's frame, with the direction from
 // its crossing point in the region to the one beyond.
 struct OwnDoor {
@@ -141,7 +151,8 @@ class RegionModels {
   struct Model {
     Pose2D frame;
     std::vector<GatewaySegment> gateways;  // its own gateway lines
-    std::vector<GatewaySegment> cutting;   // `gateways`, otherDoorLines, doorFrameLines: what cuts its beams
+    std::vector<GatewaySegment> cutting;   // `gateways`, otherDoorLines, otherAreaLines, doorFrameLines:
+                                           // what cuts its beams
     std::vector<OwnDoor> doors;            // its own doors: scans past them leave out its evidence,
                                            // scans in front of them are also cut at doorWallLines
     std::vector<ScanKey> scans;  // the scans in `lines` and `evidence`, in order

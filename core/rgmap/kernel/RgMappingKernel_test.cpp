@@ -114,6 +114,7 @@ class RgMappingKernelTest : public CppUnit::TestFixture {
   CPPUNIT_TEST(revisitedRoomIsUpdatedNotDuplicated);
   CPPUNIT_TEST(descriptionsStayInsideTheirRooms);
   CPPUNIT_TEST(beamsAreCutAtEveryDoor);
+  CPPUNIT_TEST(beamsAreCutAtOtherRegionsAreas);
   CPPUNIT_TEST(beamsAreCutJustBeyondOwnDoors);
   CPPUNIT_TEST(scansPastOwnDoorsLeaveTheEvidence);
   CPPUNIT_TEST(noSideBesideAPassagesEnds);
@@ -364,6 +365,39 @@ class RgMappingKernelTest : public CppUnit::TestFixture {
     const std::vector<DataId>& room2Scans = bothSides.regions.at(kRoom2).scans;
     hallwayScans.insert(hallwayScans.end(), room2Scans.begin(), room2Scans.end());
     CPPUNIT_ASSERT(otherDoorLines(bothSides, bothSides.regions.at(kHallway)).empty());
+  }
+
+  void beamsAreCutAtOtherRegionsAreas() {
+    const RgMappingKernel k = mappedFloor();
+    RgMapState s = k.state();
+    // A junction square between the hallway and room 2 (as if the robot had crossed it).
+    Gateway area;
+    area.id = 99;
+    area.record.id = 99;
+    area.record.kind = GatewayKind::HallwayArea;
+    area.record.classes = {{"T-Junction", 1.0}};
+    area.record.gatewayPoints = {{1, 1}, {3, 1}, {3, 3}, {1, 3}};
+    area.record.crossingPoints = {{2, 0.5}, {0.5, 2}, {2, 3.5}, {3.5, 2}};
+    area.sides[kSideA] = {kHallway, 0, 0};
+    area.sides[kSideB] = {kRoom2, 2, 0};
+    s.gateways.emplace(area.id, area);
+    s.regions.at(kHallway).gateways.insert(area.id);
+    s.regions.at(kRoom2).gateways.insert(area.id);
+    const Region& room1 = s.regions.at(kRoom1);
+    const std::vector<GatewaySegment> sides = otherAreaLines(s, room1);
+    CPPUNIT_ASSERT_EQUAL(std::size_t(4), sides.size());
+    const PlacedGateway square = placeGateway(s.gateways.at(area.id), room1.frame);
+    for (std::size_t k = 0; k < 4; ++k)
+      CPPUNIT_ASSERT(sides[k].a == square.gatewayPoints[k] && sides[k].b == square.gatewayPoints[(k + 1) % 4]);
+    // Its own regions and doors: nothing; a neutralised area or one with a side unknown: nothing.
+    CPPUNIT_ASSERT(otherAreaLines(s, s.regions.at(kHallway)).empty());
+    CPPUNIT_ASSERT(otherAreaLines(s, s.regions.at(kRoom2)).empty());
+    RgMapState neutralised = s;
+    neutralised.gateways.at(area.id).neutralised = true;
+    CPPUNIT_ASSERT(otherAreaLines(neutralised, room1).empty());
+    RgMapState oneSide = s;
+    oneSide.gateways.at(area.id).sides[kSideB] = {0, 2, 0};
+    CPPUNIT_ASSERT(otherAreaLines(oneSide, room1).empty());
   }
 
   void beamsAreCutJustBeyondOwnDoors() {
