@@ -64,19 +64,19 @@ ScoreBreakdown breakDownScore(const GroundTruth& truth, const OccupancyGrid& wor
   return out;
 }
 
-double furnitureShareMean(const GroundTruth& truth, const OccupancyGrid& world, const OccupancyGrid& empty) {
-  if (world.cells().size() != truth.labels.size() || empty.cells().size() != truth.labels.size())
-    throw InvalidArgumentError("furnitureShareMean: the floor plans and the ground truth differ in size");
+double furnitureShareMean(const GroundTruth& truth, const FurnitureTruth& furniture) {
+  if (furniture.blobOfCell.size() != truth.labels.size())
+    throw InvalidArgumentError("furnitureShareMean: the furniture and the ground truth differ in size");
   const auto rooms = std::size_t(truth.roomCount);
-  std::vector<double> pixels(rooms, 0.0), furniture(rooms, 0.0);
+  std::vector<double> pixels(rooms, 0.0), covered(rooms, 0.0);
   for (std::size_t i = 0; i < truth.labels.size(); ++i) {
     if (truth.labels[i] < 0) continue;
     const auto room = std::size_t(truth.labels[i]);
     ++pixels[room];
-    furniture[room] += empty.cells()[i] == Cell::Free && world.cells()[i] != Cell::Free;
+    covered[room] += furniture.blobOfCell[i] >= 0;
   }
   double mean = 0.0;
-  for (std::size_t r = 0; r < rooms; ++r) mean += furniture[r] / pixels[r] / double(rooms);
+  for (std::size_t r = 0; r < rooms; ++r) mean += covered[r] / pixels[r] / double(rooms);
   return mean;
 }
 

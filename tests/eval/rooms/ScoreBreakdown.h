@@ -22,6 +22,7 @@
 
 #include "core/sim/GroundTruth.h"
 #include "core/sim/OccupancyGrid.h"
+#include "tests/eval/objects/FurnitureTruth.h"
 #include "tests/eval/rooms/RoomScoring.h"
 
 namespace rgnav {
@@ -39,10 +40,10 @@ ScoreBreakdown breakDownScore(const GroundTruth& truth, const OccupancyGrid& wor
                               std::span<const SegmentPixels> segments, const RoomScore& score,
                               std::span<const int> unreachableRooms);
 
-// The mean share of each ground-truth room's pixels that furniture covers: free in `empty` (the
-// floor plan without furniture) and not in `world` (the furnished one). The rooms of the ground
-// truth include it; no laser sees under it, and of furniture against a wall not even its back.
-// Throws InvalidArgumentError if a floor plan differs in size from the ground truth.
-double furnitureShareMean(const GroundTruth& truth, const OccupancyGrid& world, const OccupancyGrid& empty);
+// The mean share of each ground-truth room's pixels that furniture covers (FurnitureTruth.h: free
+// in X.png, not in X_furnitures.png). The rooms of the ground truth include it; no laser sees
+// under it, and of furniture against a wall not even its back. Throws InvalidArgumentError if
+// `furniture` differs in size from the ground truth.
+double furnitureShareMean(const GroundTruth& truth, const FurnitureTruth& furniture);
 
 }  // namespace rgnav

@@ -1,6 +1,6 @@
 // Tests furnitureShareMean (ScoreBreakdown.h): the share of each room's pixels free in the empty
 // floor plan and not in the furnished one, averaged over the rooms; pixels of no room do not count;
-// a floor plan of another size is refused.
+// furniture of another size than the ground truth is refused.
 #include <cppunit/extensions/HelperMacros.h>
 
 #include "core/common/Errors.h"
@@ -24,10 +24,13 @@ class ScoreBreakdownTest : public CppUnit::TestFixture {
     furnished.set({4, 0}, rgnav::Cell::Occupied);
     furnished.set({1, 0}, rgnav::Cell::Occupied);  // a quarter of room 0
     furnished.set({7, 0}, rgnav::Cell::Occupied);  // outside every room: no share
-    CPPUNIT_ASSERT_DOUBLES_EQUAL(0.125, rgnav::furnitureShareMean(truth, furnished, empty), 1e-12);
+    CPPUNIT_ASSERT_DOUBLES_EQUAL(0.125, rgnav::furnitureShareMean(truth, rgnav::furnitureTruth(furnished, empty, 1)),
+                                 1e-12);
     furnished.set({6, 0}, rgnav::Cell::Occupied);  // half of room 1
-    CPPUNIT_ASSERT_DOUBLES_EQUAL(0.375, rgnav::furnitureShareMean(truth, furnished, empty), 1e-12);
-    CPPUNIT_ASSERT_THROW(rgnav::furnitureShareMean(truth, furnished, rgnav::OccupancyGrid(7, 1, 0.05)),
+    CPPUNIT_ASSERT_DOUBLES_EQUAL(0.375, rgnav::furnitureShareMean(truth, rgnav::furnitureTruth(furnished, empty, 1)),
+                                 1e-12);
+    const rgnav::OccupancyGrid shorter(7, 1, 0.05);
+    CPPUNIT_ASSERT_THROW(rgnav::furnitureShareMean(truth, rgnav::furnitureTruth(shorter, shorter, 1)),
                          rgnav::InvalidArgumentError);
   }
 };

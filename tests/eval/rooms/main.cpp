@@ -131,10 +131,9 @@ void evaluate(const std::string& mapPath, const Options& options, const std::opt
   std::printf("#   losses: recall ceiling %.3f covered %.3f best %.3f | precision pixels off-room %.3f leaked %.3f "
               "merged %.3f\n", losses.ceilingMean, losses.coveredMean, score.recallMean(), losses.offRoomShare,
               losses.leakedShare, losses.mergedShare);
-  const OccupancyGrid empty = loadFloorPlan(files.empty);
-  const double furniture = furnitureShareMean(*world.truth, world.grid, empty);
-  const ObjectScore objects =
-      scoreObjects(run.map, run.mapToWorld, world.grid, furnitureTruth(world.grid, empty, kMinFurnitureCells));
+  const FurnitureTruth furnitureBlobs = furnitureTruth(world.grid, loadFloorPlan(files.empty), kMinFurnitureCells);
+  const double furniture = furnitureShareMean(*world.truth, furnitureBlobs);
+  const ObjectScore objects = scoreObjects(run.map, run.mapToWorld, world.grid, furnitureBlobs);
   std::printf("#   objects: %zu, on furniture %zu (%.3f) | furniture blobs >= %d cells found %zu of %zu\n",
               objects.objects, objects.onFurniture, ratio(objects.onFurniture, objects.objects), kMinFurnitureCells,
               objects.blobsFound, objects.blobs);
