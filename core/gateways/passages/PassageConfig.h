@@ -35,8 +35,7 @@ struct NarrowPassageConfig {
   double minJambLengthM = 0.3;     // each gateway point bounds a surface at least this long
   // A wall end continues the gateway line at least this far ... (longer than a jamb: at 0.3 m the
   // round legs of the IPA floor plans' tables, up to 0.3-0.35 m across, still passed for wall
-  // ends. Ten furnished IPA maps, rgnav-eval-doors: 0.3 m gave precision 0.461, 0.35 m 0.537,
-  // recall 0.988 both, no map losing a door; 0.4 m lost lab_a's cubicle openings, recall 0.971)
+  // ends; 0.4 m loses open cubicles' openings; docs/EVALUATION.md has the measurements)
   double minWallEndLengthM = 0.35;
   double wallEndToleranceM = 0.15; // ... within this distance of it (wall thickness seen obliquely)
   BreakpointParams surfaceBreaks{20.0 * M_PI / 180.0, 0.01};  // where surfaces end

@@ -20,14 +20,8 @@
 //     superseded for good, also if its door is superseded later: it is no door, reports no
 //     traversal (not even one in the update that supersedes it), and one confirmed in the same
 //     update is not reported at all. Lines at a larger angle are different openings
-//     that share a wall's end (a partition's end with a door beside it, lab_b), so they stay.
-//     Ten furnished IPA maps: rgnav-eval-doors precision 0.537 -> 0.668, recall 0.988 both (of
-//     the traversed gateways 0.564 -> 0.730 doors); rgnav-eval-rooms recall mean 0.865 -> 0.874,
-//     precision mean 0.895 -> 0.903, pooled 0.837 -> 0.840 and 0.847 -> 0.839 (45 degrees: 0.870
-//     and 0.899 means). In the --list-gateways output before the rule, pairs sharing a point
-//     within a factor 1.0 and no angle limit would also have taken 17 doors (the lab_b openings
-//     across a partition's end), with factor 1.0 and 60 degrees 4 (twins of lab_a only 3 %
-//     wider).
+//     that share a wall's end (a partition's end with a door beside it), so they stay; the width
+//     factor keeps doors whose twin is only a few per cent wider (docs/EVALUATION.md).
 #pragma once
 
 #include <Eigen/Core>

@@ -8,9 +8,8 @@
 // function of four numbers - the sum f_vlm/2 (W_d + W_r) + f_gw/3 sum_S W_on^S and, per sector,
 // W_over^S - W_on^S - so they cannot tell a sector where neither measure holds (beams ending on
 // clutter between the line and l_par) from one where both do, nor W_d from W_r. The HMMs here
-// read the whole vector. In rgnav-eval-crossings this removed about a quarter of the HMM errors
-// in the 2 m cluttered hallways on the validation data (fit and validation part swapped and
-// summed) and about half on the test data of the seeds 2 and 3 (the default seed is 1).
+// read the whole vector, which tells clutter between the line and l_par from a real sector
+// (docs/EVALUATION.md has the error counts).
 #pragma once
 
 #include <cstddef>

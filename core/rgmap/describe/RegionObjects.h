@@ -10,9 +10,7 @@
 //     by walls (a room, a corridor, a desk seen between its legs); one more than maxAspectRatio
 //     times as long as wide, or narrower than minWidthM, is a wall (both faces of a 0.1-0.3 m
 //     wall or partition close into a rectangle), and one wider than maxWidthM is a room or a
-//     corridor whose inside this region did not see (its walls seen through a door). On the ten
-//     furnished floor plans of rgnav-eval-rooms the width limits raise the share of objects on
-//     furniture from 0.508 to 0.671 (ObjectScoring.h);
+//     corridor whose inside this region did not see (its walls seen through a door);
 //   - of rectangles overlapping by more than rectangles.maxOverlapRatio (intersection over union)
 //     only the most confident stays, after the filters above (a room-sized rectangle must not
 //     suppress the cabinet inside it).

@@ -36,8 +36,8 @@ namespace rgnav {
 struct SideEvidenceConfig {
   double marginM = 0.3;  // no side within this distance of the gateway line (area)
   // No side farther than this from the nearest crossing point: from farther away the robot often
-  // sees a gateway from another region than the one beyond it (rgnav-eval-rooms: 0.7 m beats
-  // 1.0, 1.5 and 2.5 m). A loop is then closed by observation only near the gateway, and otherwise
+  // sees a gateway from another region than the one beyond it (docs/EVALUATION.md compares
+  // ranges). A loop is then closed by observation only near the gateway, and otherwise
   // when the robot passes it.
   double rangeM = 0.7;
   double besideM = 0.5;  // a passage: no side farther than this beside its line's ends

@@ -74,8 +74,7 @@ std::vector<GatewaySegment> regionGatewaySegments(const RgMapState& state, const
 // A door no region was ever attached to (neither passed nor observed from near by) cuts only where
 // the region's robot stood on one side of it and another region saw it from the other: most such
 // doors are no doors (gaps between furniture, a partition's end and a far corner), and cutting at
-// all of them took the floor behind them from every region (rgnav-eval-rooms, ten maps: recall
-// mean 0.829 without them, 0.789 with all; open cubicles of lab_a 0.875 and 0.655); a real door
+// all of them took the floor behind them from every region (open cubicles above all); a real door
 // between two rooms the robot entered from the hallway is one of them (Freiburg52: each room's
 // region saw half the other room through it).
 std::vector<GatewaySegment> otherDoorLines(const RgMapState& state, const Region& region,
@@ -85,10 +84,8 @@ std::vector<GatewaySegment> otherDoorLines(const RgMapState& state, const Region
 // The four sides of the square of every hallway area that joins two regions, neither of them this
 // one (not neutralised), in the region's frame (ours, as otherDoorLines does for doors): a hallway
 // region sees along the hallway through the junctions beyond its own, into the parts of the
-// hallway other regions hold. rgnav-eval-rooms, ten maps: precision mean 0.903 -> 0.908, pooled
-// 0.839 -> 0.846; recall mean 0.874 both, pooled 0.840 -> 0.831 (a ground-truth hallway, one room,
-// is covered less by its best region once that region stops at the next region's junction:
-// office_d 0.913 -> 0.873 pooled).
+// hallway other regions hold. A ground-truth hallway, one room, is then covered less by its best
+// region, which stops at the next region's junction (docs/EVALUATION.md gives the trade).
 std::vector<GatewaySegment> otherAreaLines(const RgMapState& state, const Region& region);
 
 // One of the region's own doors (not neutralised) in the region's frame, with the direction from
@@ -115,8 +112,7 @@ std::vector<GatewaySegment> doorFrameLines(std::span<const OwnDoor> doors, const
 // detector saw, is often shorter than the opening or a little off it: the fan's slanting beams
 // passed beside its ends and the region claimed a strip of the hallway (office_c: a room's region
 // with 59 % of its pixels in the hallway). A door stands in a wall, so what lies beyond the wall's
-// line is not the region's either. rgnav-eval-rooms, ten maps: precision mean 0.891 -> 0.895,
-// pooled 0.843 -> 0.847; recall unchanged (0.865; 0.6 m in front gave 0.894, 2 m 0.896).
+// line is not the region's either.
 std::vector<GatewaySegment> doorWallLines(std::span<const OwnDoor> doors, const Eigen::Vector2d& sensor,
                                           const DoorWallCut& cut);
 

@@ -10,9 +10,8 @@
 //     hallway area's sides are attached by the traversals the detector reports, never by where
 //     the robot stood when the area was seen. Areas are squares classified from a few sequences
 //     and often sit among furniture, so "near a crossing point" put the robot on the wrong side
-//     and joined regions that are not one (rgnav-eval-rooms, ten maps, in process: recall mean
-//     0.833 -> 0.853, pooled 0.817 -> 0.827; precision mean 0.885 -> 0.891, pooled 0.834 ->
-//     0.842). Loops through a hallway area close when it is traversed.
+//     and joined regions that are not one. Loops through a hallway area close when it is
+//     traversed.
 //   - A door the detector reports under a new ID where the map already has a door (the
 //     detector's odometry drifted since, or it lost the first track) is the known door seen again
 //     (6.1.1; ours: matched by position in the map frame): the new ID becomes an alias of it, and
@@ -21,16 +20,13 @@
 //     gateway (reported or repaired) changes nothing.
 //   - A traversed hallway area that fewer than minAreaSequences observation sequences support
 //     changes no structure yet (ours): one sequence often finds a crossing among furniture or at a
-//     door across the hallway (rgnav-eval-rooms, ten maps: recall mean 0.831 -> 0.834, pooled
-//     0.793 -> 0.815; precision mean 0.864 -> 0.868).
+//     door across the hallway.
 //   - A traversed door that does not separate its two sides (DoorSeparation.h: the scans around it
 //     show free floor around its ends, as around a pillar or a cabinet's corner) is no door: the
-//     regions on its two sides are one, it is neutralised and the robot stays where it is (ours;
-//     rgnav-eval-rooms, ten maps: recall mean 0.834 -> 0.845, pooled 0.815 -> 0.823; precision
-//     mean 0.868 -> 0.864). The same for a traversed hallway area whose two sides the robot went
-//     between are joined by floor around its square (a room's corner or a gap between desks
-//     classified as a junction; DoorSeparation.h): recall mean 0.831 -> 0.833, pooled 0.809 ->
-//     0.817; precision pooled 0.837 -> 0.834.
+//     regions on its two sides are one, it is neutralised and the robot stays where it is (ours).
+//     The same for a traversed hallway area whose two sides the robot went between are joined by
+//     floor around its square (a room's corner or a gap between desks classified as a junction;
+//     DoorSeparation.h).
 //   - Traversed gateway: the region left behind is finalised (RegionFinalised, or RegionUpdated
 //     after a revisit: its description is then computed from all its scans), and the robot enters
 //     the region on the other side: the one already known there (a revisit updates it, thesis
@@ -54,9 +50,8 @@
 //     a robot that stands on a known door's side (GatewayGeometry.h: near its crossing point, not
 //     through another door) whose region is not the current one, having crossed the door's line
 //     in this visit, is treated as above: the missed traversal is repaired. A traversal the
-//     detector reports late for that passage then changes nothing. rgnav-eval-rooms, ten maps:
-//     precision pooled 0.848 -> 0.851 (lab_b 0.843 -> 0.895: a hallway region had swept through
-//     three rooms past two known doors), recall mean 0.844 -> 0.843.
+//     detector reports late for that passage then changes nothing (without it, a hallway region
+//     swept through rooms past known doors).
 //   - Requests: merge two regions (e.g. "these are the same room", 6.1.1), name regions and objects (semantics),
 //     revise corrected poses (SLAM loop closures: descriptions follow, RegionModels.h), learn RG
 //     Graph costs (5.4).
