@@ -6,7 +6,7 @@
 
 #include "GatewayDetection.hh"
 #include "clientlibs/common/ModuleClient.h"
-#include "clientlibs/gatewaydetection/GatewayEventBatch.h"
+#include "core/gateways/detection/GatewayEventBatch.h"
 
 namespace rgnav {
 

@@ -2,7 +2,7 @@
 #pragma once
 
 #include "GatewayDetection.hh"
-#include "clientlibs/gatewaydetection/GatewayEventBatch.h"
+#include "core/gateways/detection/GatewayEventBatch.h"
 
 namespace rgnav {
 

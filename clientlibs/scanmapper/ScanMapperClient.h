@@ -5,7 +5,7 @@
 
 #include "ScanMapper.hh"
 #include "clientlibs/common/ModuleClient.h"
-#include "clientlibs/scanmapper/CorrectedScans.h"
+#include "core/slam/CorrectedScans.h"
 
 namespace rgnav {
 

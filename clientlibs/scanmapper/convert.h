@@ -2,7 +2,7 @@
 #pragma once
 
 #include "ScanMapper.hh"
-#include "clientlibs/scanmapper/CorrectedScans.h"
+#include "core/slam/CorrectedScans.h"
 
 namespace rgnav {
 

@@ -17,7 +17,7 @@
 #include <mutex>
 #include <string>
 
-#include "clientlibs/gatewaydetection/GatewayEventBatch.h"
+#include "core/gateways/detection/GatewayEventBatch.h"
 #include "clientlibs/laser/LaserClient.h"
 #include "core/common/DataBuffer.h"
 #include "core/gateways/detection/GatewayDetector.h"

@@ -15,7 +15,7 @@
 #include <string>
 
 #include "clientlibs/laser/LaserClient.h"
-#include "clientlibs/scanmapper/CorrectedScans.h"
+#include "core/slam/CorrectedScans.h"
 #include "core/common/DataBuffer.h"
 #include "core/slam/ScanMapper.h"
 #include "servers/common/CheckpointPacer.h"

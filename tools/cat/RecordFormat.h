@@ -3,8 +3,8 @@
 
 #include <string>
 
-#include "clientlibs/gatewaydetection/GatewayEventBatch.h"
-#include "clientlibs/scanmapper/CorrectedScans.h"
+#include "core/gateways/detection/GatewayEventBatch.h"
+#include "core/slam/CorrectedScans.h"
 #include "core/common/SensorData.h"
 
 namespace rgnav {

@@ -1,22 +1,22 @@
 // The in-process mapping chain; see MappingPipeline.h.
 #include "tests/eval/rooms/MappingPipeline.h"
 
-#include <string>
-#include <vector>
-
 #include "core/common/Errors.h"
 
 namespace rgnav {
+namespace {
+
+constexpr std::uint32_t kFetchBatch = 100;  // as the kernel module's default
+
+}  // namespace
 
 MappingPipeline::MappingPipeline(const MappingPipelineConfig& config, std::optional<HmmClassifier> classifier)
-    : slam_(config.slam), detector_(config.gateways, std::move(classifier)), kernel_(config.kernel) {}
+    : slam_(config.slam), detection_(config.gateways, std::move(classifier)), kernel_(config.kernel) {}
 
 void MappingPipeline::addScan(const LaserScan& scan) {
   if (given_) throw InvalidArgumentError("mapping pipeline: SLAM poses after given poses");
-  const ScanOutcome outcome = slam_.addScan(scan);
-  counts_.keyframes += outcome.keyframe;
-  if (outcome.optimized) reviseKernelPoses();
-  map(scan);
+  counts_.keyframes += slam_.add(scan).keyframe;
+  map(scan, slam_);
 }
 
 void MappingPipeline::addScanAt(const LaserScan& scan, const Pose2D& corrected) {
@@ -24,38 +24,38 @@ void MappingPipeline::addScanAt(const LaserScan& scan, const Pose2D& corrected) 
     if (counts_.scans > 0) throw InvalidArgumentError("mapping pipeline: given poses after SLAM poses");
     given_.emplace();
   }
-  given_->emplace(scan.id, corrected);
-  map(scan);
+  given_->add(scan, corrected);
+  map(scan, *given_);
 }
 
-void MappingPipeline::map(const LaserScan& scan) {
-  kernel_.addScan(scan, correctedPose(scan.id));
-  for (const GatewayEvent& event : detector_.addScan(scan, scan.odometry)) {
-    kernel_.addGatewayEvent(event, kernel_.state().scans.at(event.gateway.lastScan).corrected);
+void MappingPipeline::map(const LaserScan& scan, CorrectedScanInput& scans) {
+  if (!feed_) feed_ = std::make_unique<KernelFeed>(kernel_, kernelMutex_, scans, detection_, kFetchBatch);
+  for (const GatewayEvent& event : detection_.add(scan)) {
     ++counts_.gatewayEvents;
     counts_.traversals += event.kind == GatewayEventKind::Traversed;
   }
   ++counts_.scans;
+  feedAll();
+}
+
+void MappingPipeline::feedAll() {
+  while (feed_->step()) {
+  }
 }
 
 Pose2D MappingPipeline::correctedPose(DataId scanId) const {
-  if (!given_) return slam_.correctedPose(scanId);
-  const auto found = given_->find(scanId);
-  if (found == given_->end()) throw NotAvailableError("mapping pipeline: no pose of scan " + std::to_string(scanId));
-  return found->second;
+  return given_ ? given_->correctedPose(scanId) : slam_.mapper().correctedPose(scanId);
 }
 
 void MappingPipeline::finish() {
-  if (given_) return;
-  slam_.optimize();
-  reviseKernelPoses();
-}
-
-void MappingPipeline::reviseKernelPoses() {
-  std::vector<CorrectedPose> poses;
-  poses.reserve(kernel_.state().scans.size());
-  for (const auto& [id, stored] : kernel_.state().scans) poses.push_back({id, slam_.correctedPose(id)});
-  kernel_.revisePoses(poses, slam_.state().counters.optimizations);
+  if (!feed_) return;
+  if (given_) {
+    given_->finish();
+  } else {
+    slam_.finish();
+  }
+  detection_.finish();
+  feedAll();
 }
 
 }  // namespace rgnav

@@ -12,19 +12,18 @@
 // revises them with the final SLAM poses.
 // For measuring what SLAM errors cost, addScanAt gives the corrected pose instead (e.g. the true
 // pose): the ScanMapper is then not used at all.
-// The kernel gets each scan's corrected pose as the ScanMapper has it right after that scan
-// (ScanRecord::mapped), each revision's poses right after the optimisation, before the scan it
-// was made at, and places events with the pose it holds for the gateway's last scan: the order
-// and the poses the kernel module feeds (RgMappingKernelService.h), so the server set maps a log
+// The kernel is fed by the same KernelFeed (core/rgmap/feed) as in the kernel module, from
+// in-process inputs, so the order and the poses are the module's and the server set maps a log
 // as this chain does. Where it differs from the server set: no CORBA, no checkpoints.
 #pragma once
 
-#include <map>
+#include <memory>
+#include <mutex>
 #include <optional>
 
-#include "core/gateways/detection/GatewayDetector.h"
-#include "core/rgmap/kernel/RgMappingKernel.h"
-#include "core/slam/ScanMapper.h"
+#include "core/rgmap/feed/InProcessInputs.h"
+#include "core/rgmap/feed/KernelFeed.h"
+#include "tests/eval/rooms/GivenPoseScans.h"
 
 namespace rgnav {
 
@@ -62,13 +61,16 @@ class MappingPipeline {
   const MappingCounts& counts() const { return counts_; }
 
  private:
-  void map(const LaserScan& scan);
-  void reviseKernelPoses();
+  // Detects on the scan and feeds the kernel from `scans` as far as the inputs allow.
+  void map(const LaserScan& scan, CorrectedScanInput& scans);
+  void feedAll();
 
-  ScanMapper slam_;
-  std::optional<std::map<DataId, Pose2D>> given_;  // set once addScanAt was used
-  GatewayDetector detector_;
+  InProcessScanMapper slam_;
+  std::optional<GivenPoseScans> given_;  // set once addScanAt was used
+  InProcessGatewayDetection detection_;
+  std::mutex kernelMutex_;  // the feed's lock on the kernel; the chain runs in one thread
   RgMappingKernel kernel_;
+  std::unique_ptr<KernelFeed> feed_;  // made at the first scan, from the input it brings
   MappingCounts counts_;
 };
 

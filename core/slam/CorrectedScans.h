@@ -1,6 +1,6 @@
-// Plain C++ forms of what the ScanMapper module serves (ScanMapper.idl): scans with corrected
-// poses (as of the latest revision and as mapped), by ID, with the pose graph revision they come
-// from, and the revisions with the scan each was made at.
+// Plain C++ forms of what the ScanMapper module serves (ScanMapper.idl) and its followers read:
+// scans with corrected poses (as of the latest revision and as mapped), by ID, with the pose
+// graph revision they come from, and the revisions with the scan each was made at.
 #pragma once
 
 #include <cstdint>
