@@ -39,7 +39,8 @@ SupervisedSet::SupervisedSet(const SetConfig& config, const ProbeFactory& probes
     : eventLog_(eventLogPath(config), kEventsKept),
       events_(eventLog_),
       processes_(config, events_),
-      pings_(makePings(config, probes), [this](const std::string& module, bool answered) { onPingResult(module, answered); }),
+      pings_(makePings(config, probes),
+             [this](const std::string& module, bool answered) { onPingResult(module, answered); }),
       supervisor_(config, processes_, pings_, events_) {}
 
 SupervisedSet::~SupervisedSet() { stopThreads(); }

@@ -59,7 +59,8 @@ void Supervisor::event(Module& module, const std::string& what, const std::strin
 
 void Supervisor::adopt(const std::vector<ProcessRecord>& left, Clock::time_point now) {
   for (const ProcessRecord& record : left) {
-    const auto it = std::find_if(modules_.begin(), modules_.end(), [&](const Module& m) { return m.name() == record.module; });
+    const auto it = std::find_if(modules_.begin(), modules_.end(),
+                                 [&](const Module& m) { return m.name() == record.module; });
     if (it == modules_.end() || it->pid != 0 || !processes_.adopt(record)) continue;
     Module& module = *it;
     module.pid = record.pid;
@@ -118,11 +119,10 @@ void Supervisor::handleExit(Module& module, const ExitStatus& status, Clock::tim
   }
   const RestartDecision decision = module.tracker.onExit(ExitInfo{status, false}, now);
   switch (decision.action) {
-    case RestartDecision::Action::Restart:
+    case RestartDecision::Action::Restart: {
+      const double delay = std::chrono::duration<double>(decision.delay).count();
       event(module, "exited",
-            status.describe() + (decision.delay.count()
-                                     ? "; restart in " + std::to_string(std::chrono::duration<double>(decision.delay).count()) + " s"
-                                     : "; restarting"));
+            status.describe() + (delay > 0 ? "; restart in " + std::to_string(delay) + " s" : "; restarting"));
       if (decision.delay.count() == 0) {
         launch(module, Launch::Restart, now);
       } else {
@@ -130,6 +130,7 @@ void Supervisor::handleExit(Module& module, const ExitStatus& status, Clock::tim
         module.restartAt = now + decision.delay;
       }
       break;
+    }
     case RestartDecision::Action::StayDown:
       module.state = ProcessState::Stopped;
       module.wanted = false;
@@ -156,7 +157,8 @@ void Supervisor::requestStop(Module& module, Clock::time_point now) {
 
 bool Supervisor::dependenciesReady(const Module& module) const {
   const auto& deps = module.def.dependencies;
-  return std::all_of(deps.begin(), deps.end(), [&](const std::string& d) { return find(d).state == ProcessState::Running; });
+  return std::all_of(deps.begin(), deps.end(),
+                     [&](const std::string& d) { return find(d).state == ProcessState::Running; });
 }
 
 void Supervisor::tick(Clock::time_point now) {
