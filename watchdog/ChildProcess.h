@@ -11,6 +11,7 @@
 #include <optional>
 
 #include "core/supervision/ExitStatus.h"
+#include "core/supervision/ModulePolicy.h"
 #include "core/supervision/SupervisionClock.h"
 #include "watchdog/Spawn.h"
 
@@ -41,8 +42,6 @@ class ChildProcess {
   // requestStop, then waits until the process has ended. Throws ProcessError if it survives
   // SIGKILL for kKillGrace.
   ExitStatus stop(std::chrono::nanoseconds timeout);
-
-  static constexpr std::chrono::seconds kKillGrace{5};
 
  private:
   ChildProcess(pid_t pid, std::uint64_t startTime, bool adopted);

@@ -6,16 +6,11 @@
 #include <string>
 #include <vector>
 
+#include "core/supervision/ModuleProcesses.h"
+#include "core/supervision/ProcessRecord.h"
 #include "watchdog/ChildProcess.h"
-#include "watchdog/ProcessRecord.h"
 
 namespace rgnav {
-
-struct ModuleExit {
-  std::string module;
-  pid_t pid;
-  ExitStatus status;
-};
 
 class ProcessTable {
  public:

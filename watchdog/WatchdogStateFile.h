@@ -6,7 +6,7 @@
 #include <string>
 #include <vector>
 
-#include "watchdog/ProcessRecord.h"
+#include "core/supervision/ProcessRecord.h"
 
 namespace rgnav {
 

@@ -13,7 +13,7 @@
 
 #include "core/common/Errors.h"
 #include "servers/common/ServerRuntime.h"
-#include "watchdog/LivenessProbe.h"
+#include "watchdog/CorbaPing.h"
 #include "watchdog/SetLoading.h"
 #include "watchdog/WatchdogImpl.h"
 #include "tools/common/CommandLine.h"
@@ -68,7 +68,7 @@ int main(int argc, char** argv) {
       omniORB::setClientConnectTimeout(static_cast<CORBA::ULong>(timeout.count()));
       auto set = std::make_shared<rgnav::SupervisedSet>(
           config, [&runtime, timeout](const rgnav::ModuleSpec& module, const rgnav::HostPort& at) {
-            auto probe = std::make_shared<rgnav::LivenessProbe>(runtime.orb(), at, module.objects.front(), timeout);
+            auto probe = std::make_shared<rgnav::CorbaPing>(runtime.orb(), at, module.objects.front(), timeout);
             return std::function<bool()>([probe] { return probe->answers(); });
           });
       runtime.activate("Watchdog", new rgnav::WatchdogImpl(runtime, *set), "Watchdog-" + config.name);

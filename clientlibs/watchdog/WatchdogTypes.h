@@ -4,9 +4,10 @@
 #include <cstdint>
 #include <string>
 
+#include "core/supervision/ProcessState.h"
+
 namespace rgnav {
 
-enum class ProcessState { Stopped, Starting, Running, Hung, Backoff, Fatal };
 const char* toString(ProcessState state);
 
 struct ModuleProcessInfo {

@@ -24,4 +24,7 @@ struct ModulePolicy {
   std::chrono::nanoseconds stopTimeout = std::chrono::seconds(3);    // SIGTERM, then SIGKILL
 };
 
+// How long a stop still waits for the exit after SIGKILL before it gives the process up.
+inline constexpr std::chrono::seconds kKillGrace{5};
+
 }  // namespace rgnav

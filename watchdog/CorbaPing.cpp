@@ -1,9 +1,9 @@
-// Pings by CORBA call (see LivenessProbe.h).
-#include "watchdog/LivenessProbe.h"
+// Pings by CORBA call (see CorbaPing.h).
+#include "watchdog/CorbaPing.h"
 
 namespace rgnav {
 
-LivenessProbe::LivenessProbe(CORBA::ORB_ptr orb, const HostPort& endpoint, const std::string& objectKey,
+CorbaPing::CorbaPing(CORBA::ORB_ptr orb, const HostPort& endpoint, const std::string& objectKey,
                              std::chrono::milliseconds timeout)
     : object_(orb->string_to_object(("corbaloc::" + endpoint.str() + "/" + objectKey).c_str())) {
   // Timeouts belong to one object reference, so the narrowed one needs its own.
@@ -14,7 +14,7 @@ LivenessProbe::LivenessProbe(CORBA::ORB_ptr orb, const HostPort& endpoint, const
   }
 }
 
-bool LivenessProbe::answers() {
+bool CorbaPing::answers() {
   try {
     if (CORBA::is_nil(service_)) return !object_->_non_existent();
     service_->ping();
