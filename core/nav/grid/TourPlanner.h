@@ -1,8 +1,8 @@
 // TourPlanner: a route that visits every room a round robot can reach, given the room of each
-// grid cell (the simulator takes them from its ground truth, core/sim/GroundTruthTour.h). A room is
-// reachable if one of its cells is traversable (GridPlanner inflation) and connected to the start
-// through traversable cells; its visiting point is such a cell farthest from any obstacle (so the
-// laser sees the room). Rooms are visited greedily, always the one cheapest to reach next by
+// grid cell (the simulator takes them from its ground truth, core/sim/GroundTruthTour.h). A room
+// is reachable if one of its cells is traversable (GridPlanner inflation) and connected to the
+// start through traversable cells; its visiting point is such a cell farthest from any obstacle
+// (so the laser sees the room). Rooms are visited greedily, always the one cheapest to reach next by
 // path cost (nearest-neighbour tour, Rosenkrantz, Stearns, Lewis, SIAM J. Comput. 6, 1977); each
 // leg is a GridPlanner path, so the route passes through the doors between rooms.
 #pragma once
