@@ -1,6 +1,6 @@
-# rgnav_write_link_graph(<file> [ALLOW <from>><to>...]): writes the project's link graph, as CMake itself holds it after
-# configuring, for CheckNoSimLinks.cmake. Call at the end of the top-level CMakeLists.txt, once
-# every target and every target_link_libraries call exists. Lines of <file>:
+# rgnav_write_link_graph(<file> [ALLOW <from>><to>...]): writes the project's link graph, as
+# CMake itself holds it after configuring, for CheckNoSimLinks.cmake. Call at the end of the
+# top-level CMakeLists.txt, once every target and every target_link_libraries call exists. Lines of <file>:
 #   target|<name>|<folder relative to the source root>|<role>   role: test, testing or product
 #   link|<from>|<to>        what <from> links itself (LINK_LIBRARIES)
 #   passes|<from>|<to>      what <from> passes on to whoever links it (INTERFACE_LINK_LIBRARIES;
