@@ -5,6 +5,7 @@
 
 #include <sstream>
 
+#include "core/sim/GroundTruthTour.h"
 #include "core/sim/SimulatedRobot.h"
 #include "core/sim/SimulationConfigYaml.h"
 #include "core/sim/StartPose.h"

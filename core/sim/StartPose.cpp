@@ -1,7 +1,7 @@
 // The default start pose (see StartPose.h).
 #include "core/sim/StartPose.h"
 
-#include "core/sim/motion/ClearanceMap.h"
+#include "core/nav/grid/ClearanceMap.h"
 
 namespace rgnav {
 

@@ -10,8 +10,8 @@
 #include <vector>
 
 #include "core/common/SensorData.h"
-#include "core/sim/motion/PurePursuit.h"
-#include "core/sim/motion/TourPlanner.h"
+#include "core/nav/grid/PurePursuit.h"
+#include "core/nav/grid/TourPlanner.h"
 
 namespace rgnav {
 

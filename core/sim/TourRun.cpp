@@ -3,6 +3,7 @@
 
 #include <cmath>
 
+#include "core/sim/GroundTruthTour.h"
 #include "core/sim/StartPose.h"
 
 namespace rgnav {

@@ -9,6 +9,7 @@
 #include <iostream>
 #include <thread>
 
+#include "core/sim/GroundTruthTour.h"
 #include "core/sim/SimulatedRobot.h"
 #include "core/sim/SimulationConfigYaml.h"
 #include "core/sim/StartPose.h"

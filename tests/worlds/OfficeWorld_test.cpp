@@ -11,6 +11,7 @@
 #include <set>
 #include <string>
 
+#include "core/sim/GroundTruthTour.h"
 #include "core/sim/TourRun.h"
 #include "core/sim/world/VectorWorldGroundTruth.h"
 #include "core/sim/world/VectorWorldRaster.h"

@@ -7,7 +7,7 @@
 #include <Eigen/Core>
 #include <vector>
 
-#include "core/sim/scenarios/GatewayClass.h"
+#include "core/gateways/classes/GatewayClass.h"
 
 namespace rgnav {
 

@@ -8,7 +8,7 @@
 #include <string>
 #include <vector>
 
-#include "core/sim/scenarios/GatewayClass.h"
+#include "core/gateways/classes/GatewayClass.h"
 
 namespace rgnav {
 

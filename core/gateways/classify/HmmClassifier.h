@@ -10,10 +10,10 @@
 #include <Eigen/Core>
 #include <vector>
 
+#include "core/gateways/classes/GatewayClass.h"
 #include "core/gateways/classify/BayesFusion.h"
 #include "core/gateways/classify/GatewayObservation.h"
 #include "core/gateways/classify/GaussianMixtureHmm.h"
-#include "core/sim/scenarios/GatewayClass.h"
 
 namespace rgnav {
 

@@ -9,7 +9,7 @@
 
 #include "core/common/AtomicFile.h"
 #include "core/common/Errors.h"
-#include "core/gateways/classify/GatewayClassNames.h"
+#include "core/gateways/classes/GatewayClassNames.h"
 #include "core/logs/Fields.h"
 #include "core/logs/LineReader.h"
 

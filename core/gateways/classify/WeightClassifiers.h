@@ -10,8 +10,8 @@
 #include <cstddef>
 #include <vector>
 
+#include "core/gateways/classes/GatewayClass.h"
 #include "core/gateways/classify/GatewayObservation.h"
-#include "core/sim/scenarios/GatewayClass.h"
 
 namespace rgnav {
 

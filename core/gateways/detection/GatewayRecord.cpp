@@ -1,7 +1,7 @@
 // GatewayRecord's class test (see GatewayRecord.h).
 #include "core/gateways/detection/GatewayRecord.h"
 
-#include "core/gateways/classify/GatewayClassNames.h"
+#include "core/gateways/classes/GatewayClassNames.h"
 
 namespace rgnav {
 

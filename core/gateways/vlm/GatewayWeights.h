@@ -9,8 +9,8 @@
 
 #include <vector>
 
+#include "core/gateways/classes/GatewayClass.h"
 #include "core/gateways/vlm/FreespaceMeasures.h"
-#include "core/sim/scenarios/GatewayClass.h"
 
 namespace rgnav {
 

@@ -15,8 +15,8 @@
 #include <cstddef>
 #include <vector>
 
+#include "core/gateways/classes/GatewayClass.h"
 #include "core/gateways/vlm/FreespaceMeasures.h"
-#include "core/sim/scenarios/GatewayClass.h"
 
 namespace rgnav {
 

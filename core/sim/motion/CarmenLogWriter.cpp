@@ -5,8 +5,8 @@
 #include <cmath>
 
 #include "core/common/Errors.h"
+#include "core/common/ValueChecks.h"
 #include "core/logs/FlaserGeometry.h"
-#include "core/sim/motion/ValueChecks.h"
 
 namespace rgnav {
 

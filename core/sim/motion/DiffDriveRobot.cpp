@@ -5,8 +5,8 @@
 #include <algorithm>
 
 #include "core/common/Errors.h"
-#include "core/sim/motion/DiskFootprint.h"
-#include "core/sim/motion/ValueChecks.h"
+#include "core/common/ValueChecks.h"
+#include "core/nav/grid/DiskFootprint.h"
 
 namespace rgnav {
 

@@ -9,6 +9,7 @@
 #include <cmath>
 
 #include "core/common/Pose2D.h"
+#include "core/common/VelocityCommand.h"
 #include "core/sim/OccupancyGrid.h"
 
 namespace rgnav {
@@ -23,11 +24,6 @@ struct DiffDriveConfig {
 
 // Throws ConfigError naming the first value that is not positive and finite.
 void validate(const DiffDriveConfig& config);
-
-struct VelocityCommand {
-  double translational = 0.0;  // m/s, forward positive
-  double rotational = 0.0;     // rad/s, counter-clockwise positive
-};
 
 enum class StepOutcome { Moved, Collided };
 

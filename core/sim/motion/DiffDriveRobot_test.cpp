@@ -5,8 +5,8 @@
 #include <cmath>
 
 #include "core/common/Errors.h"
+#include "core/nav/grid/DiskFootprint.h"
 #include "core/sim/motion/DiffDriveRobot.h"
-#include "core/sim/motion/DiskFootprint.h"
 #include "core/sim/scenarios/GridDrawing.h"
 
 using rgnav::Cell;

@@ -4,7 +4,7 @@
 #include <cmath>
 
 #include "core/common/Errors.h"
-#include "core/sim/motion/ValueChecks.h"
+#include "core/common/ValueChecks.h"
 
 namespace rgnav {
 

@@ -9,7 +9,7 @@
 #include <vector>
 
 #include "core/common/Pose2D.h"
-#include "core/sim/scenarios/GatewayClass.h"
+#include "core/gateways/classes/GatewayClass.h"
 
 namespace rgnav {
 

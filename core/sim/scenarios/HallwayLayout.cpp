@@ -4,7 +4,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "core/sim/motion/ValueChecks.h"
+#include "core/common/ValueChecks.h"
 
 namespace rgnav {
 

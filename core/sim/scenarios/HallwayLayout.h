@@ -8,8 +8,8 @@
 
 #include <vector>
 
+#include "core/gateways/classes/GatewayClass.h"
 #include "core/sim/OccupancyGrid.h"
-#include "core/sim/scenarios/GatewayClass.h"
 #include "core/sim/scenarios/GridDrawing.h"
 
 namespace rgnav {

@@ -6,7 +6,7 @@
 #include <random>
 
 #include "core/common/Errors.h"
-#include "core/sim/motion/ValueChecks.h"
+#include "core/common/ValueChecks.h"
 #include "core/sim/scenarios/HallwayLayout.h"
 
 namespace rgnav {

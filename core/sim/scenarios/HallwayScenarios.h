@@ -18,10 +18,10 @@
 #include <string>
 #include <vector>
 
+#include "core/gateways/classes/GatewayClass.h"
 #include "core/sim/OccupancyGrid.h"
 #include "core/sim/scenarios/ApproachTrajectory.h"
 #include "core/sim/scenarios/Clutter.h"
-#include "core/sim/scenarios/GatewayClass.h"
 
 namespace rgnav {
 

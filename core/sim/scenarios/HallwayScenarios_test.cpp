@@ -8,7 +8,7 @@
 #include <set>
 
 #include "core/common/Errors.h"
-#include "core/sim/motion/DiskFootprint.h"
+#include "core/nav/grid/DiskFootprint.h"
 #include "core/sim/scenarios/HallwayScenarios.h"
 
 using rgnav::GatewayClass;

@@ -13,8 +13,8 @@
 #include <map>
 #include <vector>
 
+#include "core/gateways/classes/GatewayClass.h"
 #include "core/gateways/classify/GatewayObservation.h"
-#include "core/sim/scenarios/GatewayClass.h"
 #include "tests/eval/crossings/ScenarioSequences.h"
 
 namespace rgnav {

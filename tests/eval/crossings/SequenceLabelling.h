@@ -14,8 +14,8 @@
 #include <cstddef>
 #include <vector>
 
+#include "core/gateways/classes/GatewayClass.h"
 #include "core/gateways/vlm/HypothesisTracker.h"
-#include "core/sim/scenarios/GatewayClass.h"
 
 namespace rgnav {
 

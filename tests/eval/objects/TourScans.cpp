@@ -1,7 +1,7 @@
 // Driving the room tour and keeping its scans by room; see TourScans.h.
 #include "tests/eval/objects/TourScans.h"
 
-#include "core/sim/motion/GridPlanner.h"
+#include "core/nav/grid/GridPlanner.h"
 
 namespace rgnav {
 

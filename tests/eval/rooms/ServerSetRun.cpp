@@ -10,8 +10,8 @@
 #include "clientlibs/groundtruth/GroundTruthClient.h"
 #include "clientlibs/rgmappingkernel/RgMappingKernelClient.h"
 #include "clientlibs/scanmapper/ScanMapperClient.h"
+#include "core/sim/GroundTruthTour.h"
 #include "core/sim/StartPose.h"
-#include "core/sim/motion/TourPlanner.h"
 #include "tests/support/cluster/Interruption.h"
 #include "tests/support/cluster/TestCluster.h"
 

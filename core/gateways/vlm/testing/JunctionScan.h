@@ -6,8 +6,8 @@
 #include <vector>
 
 #include "core/common/SensorData.h"
+#include "core/gateways/classes/GatewayClass.h"
 #include "core/lines/testing/SyntheticScan.h"
-#include "core/sim/scenarios/GatewayClass.h"
 
 namespace rgnav::testing {
 

@@ -1,5 +1,5 @@
 // PathShortcut: greedy farthest-visible-cell selection with sampled clearance checks.
-#include "core/sim/motion/PathShortcut.h"
+#include "core/nav/grid/PathShortcut.h"
 
 #include <algorithm>
 #include <cmath>

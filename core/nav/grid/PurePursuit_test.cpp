@@ -8,9 +8,9 @@
 #include <cmath>
 
 #include "core/common/Errors.h"
+#include "core/nav/grid/GridPlanner.h"
+#include "core/nav/grid/PurePursuit.h"
 #include "core/sim/motion/DiffDriveRobot.h"
-#include "core/sim/motion/GridPlanner.h"
-#include "core/sim/motion/PurePursuit.h"
 #include "core/sim/scenarios/GridDrawing.h"
 
 using rgnav::Cell;

@@ -1,42 +1,30 @@
 // TourPlanner: reachability, visiting points, and the greedy chain of planner legs.
-#include "core/sim/motion/TourPlanner.h"
+#include "core/nav/grid/TourPlanner.h"
 
-#include <cmath>
+#include <cstddef>
 
 #include "core/common/Errors.h"
 
 namespace rgnav {
 
-namespace {
-
-void requireSameGeometry(const OccupancyGrid& grid, const GroundTruth& truth) {
-  const bool same = truth.width == grid.width() && truth.height == grid.height() &&
-                    std::abs(truth.resolution - grid.resolution()) < 1e-9 &&
-                    std::abs(truth.origin.x - grid.origin().x) < 1e-9 &&
-                    std::abs(truth.origin.y - grid.origin().y) < 1e-9 &&
-                    truth.labels.size() == grid.cells().size();
-  if (!same) {
-    throw InvalidArgumentError("planTour: the ground truth does not have the grid's size, resolution and origin");
-  }
-}
-
-}  // namespace
-
-Tour planTour(const OccupancyGrid& grid, const GroundTruth& truth, const Pose2D& start,
+Tour planTour(const OccupancyGrid& grid, std::span<const int> cellRooms, int roomCount, const Pose2D& start,
               const GridPlannerConfig& config) {
-  requireSameGeometry(grid, truth);
+  if (cellRooms.size() != grid.cells().size() || roomCount < 0) {
+    throw InvalidArgumentError("planTour: the rooms need one entry per grid cell and a non-negative room count");
+  }
   const GridPlanner planner(grid, config);
   const WorldPoint startPoint{start.x, start.y};
   const std::vector<bool> reachable = planner.reachableFrom(startPoint);
 
   // Per room, the reachable cell with the largest clearance (first in row-major order on ties).
-  std::vector<CellIndex> best(static_cast<std::size_t>(std::max(truth.roomCount, 0)));
+  std::vector<CellIndex> best(static_cast<std::size_t>(roomCount));
   std::vector<double> bestClearance(best.size(), -1.0);
   for (int row = 0; row < grid.height(); ++row) {
     for (int col = 0; col < grid.width(); ++col) {
       const CellIndex c{col, row};
-      const int room = truth.roomOf(c);
-      if (room < 0 || room >= truth.roomCount || !reachable[rowMajor(c, grid.width())]) {
+      const std::size_t index = rowMajor(c, grid.width());
+      const int room = cellRooms[index];
+      if (room < 0 || room >= roomCount || !reachable[index]) {
         continue;
       }
       const double clearance = planner.clearance().at(c);
@@ -50,7 +38,7 @@ Tour planTour(const OccupancyGrid& grid, const GroundTruth& truth, const Pose2D&
   Tour tour;
   std::vector<CellIndex> goals;
   std::vector<int> goalRooms;
-  for (int room = 0; room < truth.roomCount; ++room) {
+  for (int room = 0; room < roomCount; ++room) {
     if (bestClearance[static_cast<std::size_t>(room)] < 0.0) {
       tour.unreachableRooms.push_back(room);
     } else {

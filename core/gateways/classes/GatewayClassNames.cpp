@@ -1,5 +1,5 @@
 // Gateway class names back to classes (see GatewayClassNames.h).
-#include "core/gateways/classify/GatewayClassNames.h"
+#include "core/gateways/classes/GatewayClassNames.h"
 
 namespace rgnav {
 

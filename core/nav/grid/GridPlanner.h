@@ -10,8 +10,8 @@
 #include <span>
 #include <vector>
 
-#include "core/sim/motion/ClearanceMap.h"
-#include "core/sim/motion/GridSearch.h"
+#include "core/nav/grid/ClearanceMap.h"
+#include "core/nav/grid/GridSearch.h"
 
 namespace rgnav {
 

@@ -1,5 +1,5 @@
-// ValueChecks: the range checks the motion and scenario code shares. A configuration value out of
-// range is a ConfigError, a bad call argument an InvalidArgumentError; both name the value.
+// ValueChecks: range checks for configuration values and call arguments. A configuration value
+// out of range is a ConfigError, a bad call argument an InvalidArgumentError; both name the value.
 #pragma once
 
 #include <cmath>

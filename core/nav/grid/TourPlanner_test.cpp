@@ -8,14 +8,13 @@
 #include <cmath>
 
 #include "core/common/Errors.h"
+#include "core/nav/grid/PlanningErrors.h"
+#include "core/nav/grid/PurePursuit.h"
+#include "core/nav/grid/TourPlanner.h"
 #include "core/sim/motion/DiffDriveRobot.h"
-#include "core/sim/motion/PlanningErrors.h"
-#include "core/sim/motion/PurePursuit.h"
-#include "core/sim/motion/TourPlanner.h"
 #include "core/sim/scenarios/GridDrawing.h"
 
 using rgnav::Cell;
-using rgnav::GroundTruth;
 using rgnav::OccupancyGrid;
 using rgnav::WorldPoint;
 using rgnav::WorldRect;
@@ -24,7 +23,10 @@ namespace {
 
 struct Floor {
   OccupancyGrid grid;
-  GroundTruth truth;
+  std::vector<int> rooms;  // per cell, row-major
+  int roomCount = 0;
+
+  int roomAt(WorldPoint p) const { return rooms[rgnav::rowMajor(*grid.cellOf(p), grid.width())]; }
 };
 
 // Rooms: 0 corridor, 1-3 below it, 4 above (wide door), 5 above (0.35 m door), 6 above (sealed).
@@ -35,31 +37,20 @@ Floor makeFloor() {
   const std::vector<WorldRect> doors = {{2.0, 3.85, 2.9, 4.05},  {6.0, 3.85, 6.9, 4.05},
                                         {14.0, 3.85, 14.9, 4.05}, {3.0, 5.95, 3.9, 6.15},
                                         {9.0, 5.95, 9.35, 6.15}};
-  Floor f{OccupancyGrid(328, 208, 0.05, {-0.2, -0.2}, Cell::Occupied), {}};
+  Floor f{OccupancyGrid(328, 208, 0.05, {-0.2, -0.2}, Cell::Occupied), {}, static_cast<int>(rooms.size())};
   for (const WorldRect& r : rooms) rgnav::fillRect(f.grid, r, Cell::Free);
   for (const WorldRect& d : doors) rgnav::fillRect(f.grid, d, Cell::Free);
-  GroundTruth& t = f.truth;
-  t.width = f.grid.width();
-  t.height = f.grid.height();
-  t.resolution = f.grid.resolution();
-  t.origin = f.grid.origin();
-  t.roomCount = static_cast<int>(rooms.size());
-  t.labels.assign(f.grid.cells().size(), -1);
-  for (int row = 0; row < t.height; ++row) {
-    for (int col = 0; col < t.width; ++col) {
+  f.rooms.assign(f.grid.cells().size(), -1);
+  for (int row = 0; row < f.grid.height(); ++row) {
+    for (int col = 0; col < f.grid.width(); ++col) {
       const WorldPoint p = f.grid.center({col, row});
       for (std::size_t room = 0; room < rooms.size(); ++room) {
         const WorldRect& r = rooms[room];
         if (p.x >= r.minX && p.x <= r.maxX && p.y >= r.minY && p.y <= r.maxY) {
-          t.labels[static_cast<std::size_t>(row * t.width + col)] = static_cast<int>(room);
+          f.rooms[rgnav::rowMajor({col, row}, f.grid.width())] = static_cast<int>(room);
         }
       }
     }
-  }
-  const std::vector<std::pair<int, int>> doorRooms = {{1, 0}, {2, 0}, {3, 0}, {0, 4}, {0, 5}};
-  for (std::size_t i = 0; i < doors.size(); ++i) {
-    const double y = (doors[i].minY + doors[i].maxY) / 2.0;
-    t.doors.push_back({{doors[i].minX, y}, {doors[i].maxX, y}, doorRooms[i].first, doorRooms[i].second});
   }
   return f;
 }
@@ -76,14 +67,14 @@ class TourPlannerTest : public CppUnit::TestFixture {
  public:
   void visitsEveryReachableRoomOnce() {
     const Floor f = makeFloor();
-    const rgnav::Tour tour = rgnav::planTour(f.grid, f.truth, {1.0, 5.0, 0.0});
+    const rgnav::Tour tour = rgnav::planTour(f.grid, f.rooms, f.roomCount, {1.0, 5.0, 0.0});
     CPPUNIT_ASSERT((tour.unreachableRooms == std::vector<int>{5, 6}));
     CPPUNIT_ASSERT_EQUAL(std::size_t{5}, tour.visits.size());
     std::vector<int> rooms;
     std::size_t previous = 0;
     for (const rgnav::RoomVisit& v : tour.visits) {
       rooms.push_back(v.room);
-      CPPUNIT_ASSERT_EQUAL(v.room, f.truth.roomOf(*f.grid.cellOf(v.goal)));
+      CPPUNIT_ASSERT_EQUAL(v.room, f.roomAt(v.goal));
       CPPUNIT_ASSERT(v.routeIndex > previous || (previous == 0 && v.routeIndex >= 1));
       previous = v.routeIndex;
       CPPUNIT_ASSERT_DOUBLES_EQUAL(v.goal.x, tour.route[v.routeIndex].x, 1e-12);
@@ -105,7 +96,7 @@ class TourPlannerTest : public CppUnit::TestFixture {
   void robotDrivesTheTourWithoutCollision() {
     const Floor f = makeFloor();
     const rgnav::Pose2D start{1.0, 5.0, 0.0};
-    const rgnav::Tour tour = rgnav::planTour(f.grid, f.truth, start);
+    const rgnav::Tour tour = rgnav::planTour(f.grid, f.rooms, f.roomCount, start);
     rgnav::PurePursuit follower(rgnav::PurePursuitConfig{}, tour.route);
     rgnav::DiffDriveRobot robot(rgnav::DiffDriveConfig{}, start);
     std::vector<double> closest(tour.visits.size(), 1e9);
@@ -125,10 +116,10 @@ class TourPlannerTest : public CppUnit::TestFixture {
 
   void badInputIsTypedError() {
     const Floor f = makeFloor();
-    CPPUNIT_ASSERT_THROW(rgnav::planTour(f.grid, f.truth, {0.0, 5.0, 0.0}), rgnav::StartBlockedError);
-    GroundTruth shifted = f.truth;
-    shifted.origin.x += 1.0;
-    CPPUNIT_ASSERT_THROW(rgnav::planTour(f.grid, shifted, {1.0, 5.0, 0.0}), rgnav::InvalidArgumentError);
+    CPPUNIT_ASSERT_THROW(rgnav::planTour(f.grid, f.rooms, f.roomCount, {0.0, 5.0, 0.0}), rgnav::StartBlockedError);
+    const std::vector<int> tooFew(f.rooms.begin() + 1, f.rooms.end());
+    CPPUNIT_ASSERT_THROW(rgnav::planTour(f.grid, tooFew, f.roomCount, {1.0, 5.0, 0.0}), rgnav::InvalidArgumentError);
+    CPPUNIT_ASSERT_THROW(rgnav::planTour(f.grid, f.rooms, -1, {1.0, 5.0, 0.0}), rgnav::InvalidArgumentError);
   }
 };
 CPPUNIT_TEST_SUITE_REGISTRATION(TourPlannerTest);

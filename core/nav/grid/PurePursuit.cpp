@@ -1,11 +1,11 @@
 // PurePursuit: stops at sharp corners, windowed projection onto the polyline, lookahead point,
 // curvature and speed.
-#include "core/sim/motion/PurePursuit.h"
+#include "core/nav/grid/PurePursuit.h"
 
 #include <algorithm>
 
 #include "core/common/Errors.h"
-#include "core/sim/motion/ValueChecks.h"
+#include "core/common/ValueChecks.h"
 
 namespace rgnav {
 

@@ -1,5 +1,5 @@
 // GridSearch: binary-heap A* with lazy deletion, and a breadth-first flood fill for connectivity.
-#include "core/sim/motion/GridSearch.h"
+#include "core/nav/grid/GridSearch.h"
 
 #include <algorithm>
 #include <array>

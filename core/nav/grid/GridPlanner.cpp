@@ -1,12 +1,12 @@
 // GridPlanner: start/goal checks, search, shortcutting, and conversion to world waypoints.
-#include "core/sim/motion/GridPlanner.h"
+#include "core/nav/grid/GridPlanner.h"
 
 #include <cmath>
 #include <string>
 
-#include "core/sim/motion/ValueChecks.h"
-#include "core/sim/motion/PathShortcut.h"
-#include "core/sim/motion/PlanningErrors.h"
+#include "core/common/ValueChecks.h"
+#include "core/nav/grid/PathShortcut.h"
+#include "core/nav/grid/PlanningErrors.h"
 
 namespace rgnav {
 

@@ -10,7 +10,7 @@
 #include <span>
 #include <vector>
 
-#include "core/sim/motion/ClearanceMap.h"
+#include "core/nav/grid/ClearanceMap.h"
 
 namespace rgnav {
 

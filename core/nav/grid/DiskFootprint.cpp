@@ -1,5 +1,5 @@
 // DiskFootprint: visits the cells under the disk's bounding box and measures each blocked one.
-#include "core/sim/motion/DiskFootprint.h"
+#include "core/nav/grid/DiskFootprint.h"
 
 #include <algorithm>
 #include <cmath>

@@ -7,10 +7,10 @@
 #include <limits>
 #include <random>
 
-#include "core/sim/motion/ClearanceMap.h"
-#include "core/sim/motion/DiskFootprint.h"
-#include "core/sim/motion/GridPlanner.h"
-#include "core/sim/motion/PlanningErrors.h"
+#include "core/nav/grid/ClearanceMap.h"
+#include "core/nav/grid/DiskFootprint.h"
+#include "core/nav/grid/GridPlanner.h"
+#include "core/nav/grid/PlanningErrors.h"
 #include "core/sim/scenarios/GridDrawing.h"
 
 using rgnav::Cell;

@@ -1,11 +1,11 @@
-// The inverse of gatewayClassName (core/sim/scenarios/GatewayClass.h): the thesis' class names
+// The inverse of gatewayClassName (core/gateways/classes/GatewayClass.h): the thesis' class names
 // ("X-Crossing", ..., "Hallway") back to GatewayClass, for model files and evaluation input.
 #pragma once
 
 #include <optional>
 #include <string_view>
 
-#include "core/sim/scenarios/GatewayClass.h"
+#include "core/gateways/classes/GatewayClass.h"
 
 namespace rgnav {
 

@@ -1,18 +1,19 @@
-// PurePursuit: a waypoint follower on the true pose, the simulator's stand-in for a person with a
-// joystick (Coulter, "Implementation of the Pure Pursuit Path Tracking Algorithm", CMU-RI-TR-92-01,
-// 1992). The robot steers on the circle through the point one lookahead distance further along
-// the path than its own projection (curvature 2 y / d^2 in the robot frame), keeps |w| within its
-// limit by slowing down, and slows linearly before stops. Like a careful driver in tight places
-// it stops at sharp corners (waypoints where the path turns by more than a corner angle), so the
-// lookahead point never cuts across them, and turns on the spot whenever the lookahead point lies
-// too far to the side, until it faces it. Reports when the final goal is reached.
+// PurePursuit: a waypoint follower on a known pose; the simulator drives it on the true pose as its
+// stand-in for a person with a joystick (Coulter, "Implementation of the Pure Pursuit Path Tracking
+// Algorithm", CMU-RI-TR-92-01, 1992). The robot steers on the circle through the point one
+// lookahead distance further along the path than its own projection (curvature 2 y / d^2 in the
+// robot frame), keeps |w| within its limit by slowing down, and slows linearly before stops. Like a
+// careful driver in tight places it stops at sharp corners (waypoints where the path turns by more
+// than a corner angle), so the lookahead point never cuts across them, and turns on the spot
+// whenever the lookahead point lies too far to the side, until it faces it. Reports when the final
+// goal is reached.
 #pragma once
 
 #include <vector>
 
 #include "core/common/Pose2D.h"
+#include "core/common/VelocityCommand.h"
 #include "core/sim/OccupancyGrid.h"
-#include "core/sim/motion/DiffDriveRobot.h"
 
 namespace rgnav {
 

@@ -1,5 +1,5 @@
 // ClearanceMap: the shared exact distance transform, with the grid's border counting as blocked.
-#include "core/sim/motion/ClearanceMap.h"
+#include "core/nav/grid/ClearanceMap.h"
 
 #include <algorithm>
 #include <cmath>

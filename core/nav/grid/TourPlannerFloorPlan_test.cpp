@@ -9,9 +9,9 @@
 #include <string>
 
 #include "core/logs/LogTestFiles.h"
+#include "core/nav/grid/PurePursuit.h"
+#include "core/nav/grid/TourPlanner.h"
 #include "core/sim/motion/DiffDriveRobot.h"
-#include "core/sim/motion/PurePursuit.h"
-#include "core/sim/motion/TourPlanner.h"
 #include "core/sim/world/FloorPlan.h"
 #include "core/sim/world/IpaGroundTruth.h"
 
@@ -40,7 +40,7 @@ std::size_t driveTour(const std::string& name, std::size_t expectedUnreachable) 
   const rgnav::GroundTruth truth =
       rgnav::loadIpaGroundTruth(mapFile(name + "_gt_segmentation.png"), mapFile(name + ".png"), grid);
   const WorldPoint s = mostOpenSpot(grid);
-  const rgnav::Tour tour = rgnav::planTour(grid, truth, {s.x, s.y, 0.0});
+  const rgnav::Tour tour = rgnav::planTour(grid, truth.labels, truth.roomCount, {s.x, s.y, 0.0});
   CPPUNIT_ASSERT_EQUAL(expectedUnreachable, tour.unreachableRooms.size());
   CPPUNIT_ASSERT_EQUAL(static_cast<std::size_t>(truth.roomCount) - expectedUnreachable, tour.visits.size());
 

@@ -1,5 +1,5 @@
 // GatewayClass: names and openings per class.
-#include "core/sim/scenarios/GatewayClass.h"
+#include "core/gateways/classes/GatewayClass.h"
 
 namespace rgnav {
 
