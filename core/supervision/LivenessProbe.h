@@ -1,7 +1,7 @@
 // LivenessProbe: asks a module whether it is alive (DESIGN.md, supervisors: alive means it
 // answers, not that its PID exists). A ping is only asked for; its outcome arrives later as
 // Supervisor::onPingResult (answered, or no answer within the heartbeat timeout), so a slow
-// module never holds up supervision. The watchdog pings by CORBA call on one thread per module
+// module never holds up supervision. The watchdog pings by a remote call on one thread per module
 // (watchdog/PingThreads.h); tests answer by hand.
 #pragma once
 
