@@ -3,17 +3,14 @@
 //   <module> <pid> <start time>
 #include "watchdog/WatchdogStateFile.h"
 
-#include <fcntl.h>
-#include <unistd.h>
-
 #include <cerrno>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
 #include <system_error>
 
+#include "core/common/AtomicFile.h"
 #include "core/common/Errors.h"
-#include "watchdog/UniqueFd.h"
 
 namespace rgnav {
 namespace {
@@ -35,48 +32,12 @@ std::string serialize(const std::vector<ProcessRecord>& records) {
   return text.str();
 }
 
-void writeAll(int fd, const std::string& data, const std::string& path) {
-  std::size_t done = 0;
-  while (done < data.size()) {
-    const ssize_t n = ::write(fd, data.data() + done, data.size() - done);
-    if (n < 0 && errno == EINTR) continue;
-    if (n < 0) throwFileError("cannot write", path);
-    done += static_cast<std::size_t>(n);
-  }
-}
-
-void syncDirectoryOf(const std::string& path) {
-  const std::filesystem::path parent = std::filesystem::path(path).parent_path();
-  const std::string dir = parent.empty() ? std::filesystem::current_path().string() : parent.string();
-  const UniqueFd fd(open(dir.c_str(), O_RDONLY | O_DIRECTORY | O_CLOEXEC));
-  if (!fd.valid() || fsync(fd.get()) != 0) throwFileError("cannot sync directory", dir);
-}
-
 }  // namespace
 
 WatchdogStateFile::WatchdogStateFile(std::string path) : path_(std::move(path)) {}
 
 void WatchdogStateFile::write(const std::vector<ProcessRecord>& records) const {
-  const std::string data = serialize(records);
-  const std::string tmp = path_ + ".tmp";
-  {
-    const UniqueFd fd(open(tmp.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644));
-    if (!fd.valid()) throwFileError("cannot create", tmp);
-    try {
-      writeAll(fd.get(), data, tmp);
-      if (fsync(fd.get()) != 0) throwFileError("cannot sync", tmp);
-    } catch (const FileError&) {
-      unlink(tmp.c_str());
-      throw;
-    }
-  }
-  if (rename(tmp.c_str(), path_.c_str()) != 0) {
-    const int error = errno;
-    unlink(tmp.c_str());
-    errno = error;
-    throwFileError("cannot rename " + tmp + " to", path_);
-  }
-  syncDirectoryOf(path_);
+  writeFileAtomically(path_, serialize(records));
 }
 
 std::vector<ProcessRecord> WatchdogStateFile::read() const {

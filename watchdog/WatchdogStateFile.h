@@ -15,9 +15,8 @@ class WatchdogStateFile {
   explicit WatchdogStateFile(std::string path);
 
   const std::string& path() const { return path_; }
-  // Writes <path>.tmp, fsyncs it, renames it over <path> and fsyncs the directory. Throws
-  // FileError (the old file stays intact), InvalidArgumentError for a module name that is
-  // empty or contains whitespace.
+  // Replaces <path> atomically (writeFileAtomically). Throws FileError (the old file stays
+  // intact), InvalidArgumentError for a module name that is empty or contains whitespace.
   void write(const std::vector<ProcessRecord>& records) const;
   // Empty if the file does not exist; FileError if it cannot be read, FormatError (with the
   // line) if it is not a state file.

@@ -20,7 +20,7 @@ class WatchdogStateFileTest : public CppUnit::TestFixture {
   CPPUNIT_TEST(roundTrip);
   CPPUNIT_TEST(missingFileMeansNoProcesses);
   CPPUNIT_TEST(writeReplacesWholeFileAndLeavesNoTemporary);
-  CPPUNIT_TEST(failedWriteKeepsOldFile);
+  CPPUNIT_TEST(staleTemporaryFileDoesNotStopWrites);
   CPPUNIT_TEST(rejectsMalformedFiles);
   CPPUNIT_TEST(rejectsBadModuleName);
   CPPUNIT_TEST_SUITE_END();
@@ -48,13 +48,13 @@ class WatchdogStateFileTest : public CppUnit::TestFixture {
                          rgnav::testing::readFile(file.path()));
     CPPUNIT_ASSERT(!std::filesystem::exists(file.path() + ".tmp"));
   }
-  void failedWriteKeepsOldFile() {
+  void staleTemporaryFileDoesNotStopWrites() {
     const WatchdogStateFile file(dir_.file("state"));
     file.write(three_);
-    // A directory where the temporary file must go makes the write fail before the rename.
+    // What a watchdog that crashed while writing may have left (AtomicFile_test: failures).
     std::filesystem::create_directory(file.path() + ".tmp");
-    CPPUNIT_ASSERT_THROW(file.write({three_[0]}), rgnav::FileError);
-    CPPUNIT_ASSERT(three_ == file.read());
+    file.write({three_[0]});
+    CPPUNIT_ASSERT(std::vector<rgnav::ProcessRecord>{three_[0]} == file.read());
   }
   void rejectsMalformedFiles() {
     const WatchdogStateFile file(dir_.file("state"));

@@ -90,13 +90,16 @@ void ClientConnection::invoke(const char* operation, Idempotence idempotence,
         return;
       } catch (const RGNav::InvalidArgument& e) {
         state_ = ConnectionState::Connected;
-        throw InvalidArgumentError(where + ": " + e.message.in());
+        throw BadArgumentError(where + ": " + e.message.in(), e.field.in());
       } catch (const RGNav::NotAvailable& e) {
         state_ = ConnectionState::Connected;
         throw NotAvailableError(where + ": " + e.message.in());
       } catch (const RGNav::NotSupported& e) {
         state_ = ConnectionState::Connected;
         throw NotSupportedError(where + ": " + e.message.in());
+      } catch (const RGNav::Failed& e) {
+        state_ = ConnectionState::Connected;
+        throw ModuleFailedError(where + ": " + e.message.in());
       } catch (const CORBA::SystemException& e) {
         lastFailure = describe(e);
         const bool restartLike = dynamic_cast<const CORBA::TRANSIENT*>(&e) || dynamic_cast<const CORBA::COMM_FAILURE*>(&e) ||

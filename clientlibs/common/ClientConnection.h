@@ -29,6 +29,24 @@ class ModuleUnavailableError : public Error {
   using Error::Error;
 };
 
+// The module refused an argument (IDL InvalidArgument); field() names it ("" for the arguments
+// together).
+class BadArgumentError : public InvalidArgumentError {
+ public:
+  BadArgumentError(const std::string& what, std::string field) : InvalidArgumentError(what), field_(std::move(field)) {}
+  const std::string& field() const { return field_; }
+
+ private:
+  std::string field_;
+};
+
+// The module failed inside the call (IDL Failed: an unexpected error there, e.g. a file it could
+// not write); the message is the module's.
+class ModuleFailedError : public Error {
+ public:
+  using Error::Error;
+};
+
 // Whether a call may run twice without harm; only idempotent calls are retried after a
 // failure that may have reached the server.
 enum class Idempotence { Idempotent, NotIdempotent };
@@ -42,7 +60,9 @@ class ClientConnection {
 
   // Calls op(object, generation) until it succeeds or the retry budget is spent. generation
   // changes whenever the object reference was replaced, so callers can cache narrowed refs.
-  // IDL user exceptions of Common.idl become the matching rgnav::*Error.
+  // IDL user exceptions of Common.idl become the matching rgnav::*Error with the module's
+  // message: InvalidArgument -> BadArgumentError, NotAvailable -> NotAvailableError,
+  // NotSupported -> NotSupportedError, Failed -> ModuleFailedError.
   void invoke(const char* operation, Idempotence idempotence,
               const std::function<void(CORBA::Object_ptr, std::uint64_t generation)>& op);
 

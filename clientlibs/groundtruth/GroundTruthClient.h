@@ -18,6 +18,7 @@ class GroundTruthClient : public ModuleClientOf<RGNav::GroundTruth> {
 
   // NotAvailableError for a scan the simulator does not (or no longer) know.
   Pose2D truePose(DataId scanId);
+  // BadArgumentError naming "x" or "y" for a NaN or infinite coordinate.
   int roomAt(double x, double y);
   unsigned roomCount();
   std::vector<DoorLine> doorLines();

@@ -24,7 +24,17 @@ ClientSettings withExportTimeout(ClientSettings settings) {
 RgMappingKernelClient::RgMappingKernelClient(ClientSettings settings, std::string objectName)
     : ModuleClientOf(objectName, settings),
       consumer_(settings.consumer),
-      exports_(objectName, withExportTimeout(settings)) {}
+      exports_(objectName, withExportTimeout(settings)),
+      requestIds_([] {
+        std::random_device entropy;
+        return (std::uint64_t{entropy()} << 32) | entropy();
+      }()) {}
+
+RgMappingKernelClient::RequestId RgMappingKernelClient::newRequestId() {
+  RequestId id = 0;
+  while (id == 0) id = requestIds_();
+  return id;
+}
 
 MapSummaryView RgMappingKernelClient::summary() {
   return connection_.call("summary", [](Kernel k) { return fromIdl(k->summary()); });
@@ -74,10 +84,8 @@ PathView RgMappingKernelClient::findPath(RegionId startRegion, const Eigen::Vect
 }
 
 void RgMappingKernelClient::nameRegion(RegionId id, const std::string& name) {
-  connection_.call("nameRegion", [&](Kernel k) {
-    k->nameRegion(id, name.c_str());
-    return 0;
-  });
+  const RequestId request = newRequestId();
+  connection_.call("nameRegion", [&](Kernel k) { k->nameRegion(request, id, name.c_str()); });
 }
 
 RegionId RgMappingKernelClient::regionByName(const std::string& name) {
@@ -85,10 +93,8 @@ RegionId RgMappingKernelClient::regionByName(const std::string& name) {
 }
 
 void RgMappingKernelClient::nameObject(RegionId region, const Eigen::Vector2d& atInRegion, const std::string& name) {
-  connection_.call("nameObject", [&](Kernel k) {
-    k->nameObject(region, toIdl(atInRegion), name.c_str());
-    return 0;
-  });
+  const RequestId request = newRequestId();
+  connection_.call("nameObject", [&](Kernel k) { k->nameObject(request, region, toIdl(atInRegion), name.c_str()); });
 }
 
 RgMappingKernel::NamedObject RgMappingKernelClient::objectByName(const std::string& name) {
@@ -96,7 +102,8 @@ RgMappingKernel::NamedObject RgMappingKernelClient::objectByName(const std::stri
 }
 
 RegionId RgMappingKernelClient::mergeRegions(RegionId a, RegionId b) {
-  return connection_.call("mergeRegions", [&](Kernel k) { return k->mergeRegions(a, b); });
+  const RequestId request = newRequestId();
+  return connection_.call("mergeRegions", [&](Kernel k) { return k->mergeRegions(request, a, b); });
 }
 
 RgMapEventBatch RgMappingKernelClient::eventsSince(RgMapEventId afterId, std::uint32_t maxCount) {

@@ -1,8 +1,13 @@
 // RgMappingKernelClient: the RG Map of the RGMappingKernel module: regions with descriptions,
-// gateways, the RG graph and paths, names and merges, the map's events by ID, export.
+// gateways, the RG graph and paths, names and merges, the map's events by ID, export. Names and
+// merges are not idempotent: each call carries a new random request ID, kept over its retries,
+// so that the kernel acts on it once however often a lost answer makes the client ask
+// (RGMappingKernel.idl). Errors: BadArgumentError naming the field, NotAvailableError,
+// ModuleFailedError, ModuleUnavailableError (ClientConnection.h).
 #pragma once
 
 #include <chrono>
+#include <random>
 #include <vector>
 
 #include "RGMappingKernel.hh"
@@ -29,15 +34,20 @@ class RgMappingKernelClient : public ModuleClientOf<RGNav::RGMappingKernel> {
   RgMappingKernel::NamedObject objectByName(const std::string& name);
   RegionId mergeRegions(RegionId a, RegionId b);
   RgMapEventBatch eventsSince(RgMapEventId afterId, std::uint32_t maxCount);
-  // The files written, one per line. Describing and drawing a large map takes long (an outdoor
+  // The files written, one per line; `directory` is relative to the kernel's export root (""
+  // for the root) or absolute inside it (RGMappingKernel.idl). Describing and drawing a large map takes long (an outdoor
   // campus: tens of seconds), so this call waits up to kExportCallTimeout for its answer.
   std::string exportMap(const std::string& directory, const std::string& name, bool occupancy);
 
   static constexpr std::chrono::minutes kExportCallTimeout{10};
 
  private:
+  using RequestId = std::uint64_t;
+  RequestId newRequestId();  // nonzero
+
   std::string consumer_;
   TypedConnection<RGNav::RGMappingKernel> exports_;  // exportMap only, with the long timeout
+  std::mt19937_64 requestIds_;
 };
 
 }  // namespace rgnav

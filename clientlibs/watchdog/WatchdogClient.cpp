@@ -6,17 +6,6 @@
 
 namespace rgnav {
 
-namespace {
-template <class F>
-auto forModule(const std::string& name, F&& f) {
-  try {
-    return f();
-  } catch (const RGNav::UnknownModule& e) {
-    throw InvalidArgumentError("Watchdog: " + name + ": " + e.message.in());
-  }
-}
-}  // namespace
-
 WatchdogClient::WatchdogClient(const HostPort& endpoint, ClientSettings settings)
     : ModuleClientOf("Watchdog", std::move(settings), endpoint) {}
 
@@ -28,26 +17,24 @@ std::vector<ModuleProcessInfo> WatchdogClient::modules() {
 }
 
 ModuleProcessInfo WatchdogClient::describeModule(const std::string& name) {
-  return forModule(name, [&] {
-    return connection_.call("describeModule", [&](RGNav::Watchdog_ptr w) {
-      RGNav::ModuleInfo_var info = w->describeModule(name.c_str());
-      return fromIdl(info.in());
-    });
+  return connection_.call("describeModule", [&](RGNav::Watchdog_ptr w) {
+    RGNav::ModuleInfo_var info = w->describeModule(name.c_str());
+    return fromIdl(info.in());
   });
 }
 
 void WatchdogClient::stopModule(const std::string& name) {
-  forModule(name, [&] { connection_.call("stopModule", [&](RGNav::Watchdog_ptr w) { w->stopModule(name.c_str()); }); });
+  connection_.call("stopModule", [&](RGNav::Watchdog_ptr w) { w->stopModule(name.c_str()); }, Idempotence::NotIdempotent);
 }
 
 void WatchdogClient::startModule(const std::string& name) {
-  forModule(name, [&] { connection_.call("startModule", [&](RGNav::Watchdog_ptr w) { w->startModule(name.c_str()); }); });
+  connection_.call("startModule", [&](RGNav::Watchdog_ptr w) { w->startModule(name.c_str()); },
+                   Idempotence::NotIdempotent);
 }
 
 void WatchdogClient::restartModule(const std::string& name) {
-  forModule(name, [&] {
-    connection_.call("restartModule", [&](RGNav::Watchdog_ptr w) { w->restartModule(name.c_str()); });
-  });
+  connection_.call("restartModule", [&](RGNav::Watchdog_ptr w) { w->restartModule(name.c_str()); },
+                   Idempotence::NotIdempotent);
 }
 
 std::vector<SupervisionEvent> WatchdogClient::eventsSince(std::uint64_t afterId, std::uint32_t maxCount) {
@@ -58,7 +45,7 @@ std::vector<SupervisionEvent> WatchdogClient::eventsSince(std::uint64_t afterId,
 }
 
 void WatchdogClient::shutdownSet() {
-  connection_.call("shutdownSet", [](RGNav::Watchdog_ptr w) { w->shutdownSet(); });
+  connection_.call("shutdownSet", [](RGNav::Watchdog_ptr w) { w->shutdownSet(); }, Idempotence::NotIdempotent);
 }
 
 }  // namespace rgnav

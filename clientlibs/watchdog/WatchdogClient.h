@@ -16,11 +16,16 @@ class WatchdogClient : public ModuleClientOf<RGNav::Watchdog> {
   WatchdogClient(const HostPort& endpoint, ClientSettings settings = ClientSettings::fromEnvironment());
 
   std::vector<ModuleProcessInfo> modules();
-  // InvalidArgumentError for a module the set does not have.
+  // BadArgumentError (field "name") for a module the set does not have.
   ModuleProcessInfo describeModule(const std::string& name);
+  // Stopping, starting and restarting a module and shutting the set down are not idempotent:
+  // they are not retried once a call may have reached the watchdog (a timeout, a connection lost
+  // after sending); ModuleUnavailableError then says so, and the caller looks at the module's
+  // state before it asks again. Retried only when the call surely did not arrive.
   void stopModule(const std::string& name);
   void startModule(const std::string& name);
   void restartModule(const std::string& name);
+  // At most maxCount events, and at most the watchdog's cap: ask again after the last one.
   std::vector<SupervisionEvent> eventsSince(std::uint64_t afterId, std::uint32_t maxCount);
   void shutdownSet();
 };

@@ -2,6 +2,7 @@
 #include "core/common/AtomicFile.h"
 
 #include <fcntl.h>
+#include <sys/stat.h>
 #include <unistd.h>
 
 #include <cerrno>
@@ -15,6 +16,8 @@
 namespace rgnav {
 
 namespace {
+
+constexpr mode_t kFileMode = 0644;
 
 // Writes all of `content` to `fd` and fsyncs it; closes `fd` in any case. Returns 0 or the errno
 // of the step that failed, with that step's name in `step`.
@@ -37,26 +40,46 @@ int writeAllAndSync(int fd, const std::string& content, const char*& step) {
   return synced != 0 ? synced : closed;
 }
 
+// fsyncs the directory that holds `path`, so that a rename into it survives a crash.
+void syncDirectoryOf(const std::string& path) {
+  const std::filesystem::path parent = std::filesystem::path(path).parent_path();
+  const std::string dir = parent.empty() ? std::string(".") : parent.string();
+  const int fd = ::open(dir.c_str(), O_RDONLY | O_DIRECTORY | O_CLOEXEC);
+  if (fd < 0) throw FileError(dir + ": cannot open directory to sync: " + std::strerror(errno));
+  const int synced = ::fsync(fd) == 0 ? 0 : errno;
+  ::close(fd);
+  if (synced != 0) throw FileError(dir + ": cannot sync directory: " + std::strerror(synced));
+}
+
 }  // namespace
 
 void writeFileAtomically(const std::string& path, const std::string& content) {
-  const std::string temp = path + ".tmp." + std::to_string(::getpid());
-  const int fd = ::open(temp.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
-  if (fd < 0) throw FileError(temp + ": cannot create: " + std::strerror(errno));
+  std::string temp = path + ".tmp.XXXXXX";
+  // mkostemp creates a new file under a fresh name (O_EXCL: never through an existing name or a
+  // symbolic link planted there), readable like any other file the project writes.
+  const int fd = ::mkostemp(temp.data(), O_CLOEXEC);
+  if (fd < 0) throw FileError(path + ": cannot create a temporary file beside it: " + std::strerror(errno));
+  if (::fchmod(fd, kFileMode) != 0) {
+    const int err = errno;
+    ::close(fd);
+    ::unlink(temp.c_str());
+    throw FileError(temp + ": cannot set its mode: " + std::strerror(err));
+  }
   const char* step = "";
   if (const int err = writeAllAndSync(fd, content, step); err != 0) {
     ::unlink(temp.c_str());
     throw FileError(temp + ": cannot " + step + ": " + std::strerror(err));
   }
   if (::rename(temp.c_str(), path.c_str()) != 0) {
-    const int err = errno;
+    const int renameErr = errno;
     ::unlink(temp.c_str());
-    throw FileError(path + ": cannot replace: " + std::strerror(err));
+    throw FileError(path + ": cannot replace: " + std::strerror(renameErr));
   }
+  syncDirectoryOf(path);
 }
 
 void appendToFileDurably(const std::string& path, const std::string& content) {
-  const int fd = ::open(path.c_str(), O_WRONLY | O_CREAT | O_APPEND | O_CLOEXEC, 0644);
+  const int fd = ::open(path.c_str(), O_WRONLY | O_CREAT | O_APPEND | O_CLOEXEC | O_NOFOLLOW, kFileMode);
   if (fd < 0) throw FileError(path + ": cannot open for appending: " + std::strerror(errno));
   const char* step = "";
   if (const int err = writeAllAndSync(fd, content, step); err != 0)

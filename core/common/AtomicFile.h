@@ -1,7 +1,11 @@
 // writeFileAtomically: replaces a file's content so that readers see either the old or the new
-// content, never a part (DESIGN.md "State survives": write a temporary file, fsync, rename);
+// content, never a part, also after a crash (DESIGN.md "State survives": a temporary file under a
+// fresh name beside it (mkostemp: never opened through a symbolic link), fsync, rename, fsync of
+// the directory). The one atomic write of the project: checkpoints, exports, the watchdog's state.
+// A symbolic link at `path` itself is replaced, not followed.
 // appendToFileDurably: adds to the end of a journal and fsyncs (a crash may leave a part of the
-// last append, which the journal's reader must ignore); readCheckpoint reads such a file back.
+// last append, which the journal's reader must ignore; a symbolic link is refused);
+// readCheckpoint reads such a file back.
 #pragma once
 
 #include <optional>

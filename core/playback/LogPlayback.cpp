@@ -21,9 +21,16 @@ bool LogPlayback::wouldEvictUnread(const DataBuffer<Record>& buffer, const Curso
 }
 
 void LogPlayback::advance(Cursors& cursors, const std::string& consumer, DataId afterId, double wallElapsed) {
+  std::erase_if(cursors, [&](const auto& entry) { return wallElapsed - entry.second.lastAsked >= kConsumerIdleSeconds; });
   if (consumer.empty()) return;
+  if (!cursors.contains(consumer) && cursors.size() >= kMaxConsumers) return;
   Cursor& cursor = cursors[consumer];
   cursor = Cursor{std::max(cursor.fetched, afterId), wallElapsed};
+}
+
+std::size_t LogPlayback::scanConsumers() const {
+  std::lock_guard lock(mutex_);
+  return scanCursors_.size();
 }
 
 LogPlayback::LogPlayback(std::unique_ptr<LogSource> source, ReplayMode mode, std::size_t bufferCapacity)

@@ -5,7 +5,9 @@
 // released while it would push out of a full buffer a record that one of the stream's active
 // named consumers (those who asked within the last kConsumerIdleSeconds) has not fetched yet,
 // so a consumer that went away for good does not stall the replay, and one that restarts within
-// that time finds its records still there. Anonymous consumers ("") hold nothing back.
+// that time finds its records still there. Anonymous consumers ("") hold nothing back. The
+// consumers a stream remembers are bounded: an idle one is forgotten, and beyond kMaxConsumers
+// active ones a new name asks as if anonymous (a caller inventing names cannot grow the table).
 // Thread-safe: the Laser and Base servants share one playback.
 #pragma once
 
@@ -25,6 +27,7 @@ namespace rgnav {
 class LogPlayback {
  public:
   static constexpr double kConsumerIdleSeconds = 5.0;
+  static constexpr std::size_t kMaxConsumers = 32;  // named consumers remembered per stream
 
   // Reads the first record to anchor the schedule. Throws as the source does.
   LogPlayback(std::unique_ptr<LogSource> source, ReplayMode mode, std::size_t bufferCapacity);
@@ -43,6 +46,8 @@ class LogPlayback {
   DataId latestScanId(double wallElapsed);
   DataId latestOdometryId(double wallElapsed);
   DataId oldestScanId() const;
+  // Named consumers remembered for the scan stream.
+  std::size_t scanConsumers() const;
 
   LogStats stats() const;
   // Why the replay ended early (a read error in the middle of the log), empty if it did not.

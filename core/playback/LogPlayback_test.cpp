@@ -48,6 +48,7 @@ class LogPlaybackTest : public CppUnit::TestFixture {
   CPPUNIT_TEST(realTimeReleasesByWallClock);
   CPPUNIT_TEST(scaledRealTimeReleasesFaster);
   CPPUNIT_TEST(asFastReleasesWhatConsumersAsk);
+  CPPUNIT_TEST(consumersAreBoundedAndForgotten);
   CPPUNIT_TEST(odometryIsInterpolatedAtStamps);
   CPPUNIT_TEST(smallBufferDropsOldScans);
   CPPUNIT_TEST(slowestActiveConsumerPacesTheReplay);
@@ -109,6 +110,14 @@ class LogPlaybackTest : public CppUnit::TestFixture {
     // A scan reader silent for longer than the idle limit no longer holds the replay back.
     const double later = 0.3 + LogPlayback::kConsumerIdleSeconds;
     CPPUNIT_ASSERT_DOUBLES_EQUAL(10.0, playback.odometryAt(9.0, later).pose.x, 1e-9);
+  }
+  void consumersAreBoundedAndForgotten() {
+    LogPlayback playback(std::make_unique<TenSecondLog>(), parseReplayMode("max"), 3);
+    for (int i = 0; i < 1000; ++i) playback.scansSince(0, 1, 0.0, "caller-" + std::to_string(i));
+    CPPUNIT_ASSERT_EQUAL(LogPlayback::kMaxConsumers, playback.scanConsumers());
+    // After the idle time only the caller that asks again is remembered.
+    playback.scansSince(0, 1, LogPlayback::kConsumerIdleSeconds, "ScanMapper");
+    CPPUNIT_ASSERT_EQUAL(std::size_t{1}, playback.scanConsumers());
   }
   void replaysTheWholeIntelLogInOrder() {
     LogPlayback playback(openLog(sharedPath("data/laser/corrected/intel-corrected.log.gz")),

@@ -3,7 +3,7 @@
 
 #include "clientlibs/common/convert.h"
 #include "clientlibs/groundtruth/convert.h"
-#include "servers/common/IdlErrors.h"
+#include "servers/common/WireChecks.h"
 
 namespace rgnav {
 
@@ -11,16 +11,29 @@ GroundTruthImpl::GroundTruthImpl(ServerRuntime& runtime, std::shared_ptr<Simulat
     : ServiceServant(runtime), robot_(std::move(robot)) {}
 
 RGNav::Pose2D GroundTruthImpl::truePose(RGNav::DataId scanId) {
-  return toIdl(withIdlErrors([&] { return robot_->truePoseOfScan(scanId); }));
+  return serve(Raises::InvalidArgument | Raises::NotAvailable, [&] {
+    wire::requireId(scanId, "scanId");
+    return toIdl(robot_->truePoseOfScan(scanId));
+  });
 }
 
-CORBA::Long GroundTruthImpl::roomAt(CORBA::Double x, CORBA::Double y) { return robot_->roomAt({x, y}); }
+CORBA::Long GroundTruthImpl::roomAt(CORBA::Double x, CORBA::Double y) {
+  return serve(Raises::InvalidArgument, [&] {
+    wire::requireFinite(x, "x");
+    wire::requireFinite(y, "y");
+    return static_cast<CORBA::Long>(robot_->roomAt({x, y}));
+  });
+}
 
-CORBA::ULong GroundTruthImpl::roomCount() { return robot_->roomCount(); }
+CORBA::ULong GroundTruthImpl::roomCount() {
+  return serve(Raises::FailedOnly, [&] { return static_cast<CORBA::ULong>(robot_->roomCount()); });
+}
 
 RGNav::DoorLineSeq* GroundTruthImpl::doorLines() {
-  return new RGNav::DoorLineSeq(
-      toIdlSeq<RGNav::DoorLineSeq>(robot_->doorLines(), [](const DoorLine& d) { return toIdl(d); }));
+  return serve(Raises::FailedOnly, [&] {
+    return new RGNav::DoorLineSeq(
+        toIdlSeq<RGNav::DoorLineSeq>(robot_->doorLines(), [](const DoorLine& d) { return toIdl(d); }));
+  });
 }
 
 }  // namespace rgnav

@@ -1,7 +1,13 @@
 // InputFollower: the thread with which a module follows its input modules by ID. It calls `step`
-// until stopped, sleeps `idle` after a step that found nothing new, and records a typed error
-// (an input module away or restarting) as the health error of `source`, retrying after ten idle
-// periods; the next good step clears it.
+// until stopped and sleeps `idle` after a step that found nothing new. No error ends the thread
+// (or the process):
+//  - an input module away, restarting or failing (ModuleUnavailableError, ModuleFailedError) is
+//    the health error of `source`, retried after ten idle periods without limit;
+//  - any other error is taken to come from the input record the step was working on: it is
+//    logged, counted (health "input_failures") and retried; once the same record failed
+//    kAttemptsPerRecord times in a row, `skip` drops it (health "input_records_skipped") and
+//    the module goes on with the next one.
+// The next good step clears the health error.
 #pragma once
 
 #include <atomic>
@@ -16,9 +22,13 @@ namespace rgnav {
 
 class InputFollower {
  public:
-  // `step` returns false when there was nothing new.
+  // Attempts a bad input record gets before it is skipped.
+  static constexpr int kAttemptsPerRecord = 3;
+
+  // `step` returns false when there was nothing new. `skip` drops the record the failing step
+  // was working on and says which record it was.
   InputFollower(ModuleHealth& health, std::string source, std::function<bool()> step,
-                std::chrono::milliseconds idle = std::chrono::milliseconds(10));
+                std::function<std::string()> skip, std::chrono::milliseconds idle = std::chrono::milliseconds(10));
   ~InputFollower();
   InputFollower(const InputFollower&) = delete;
   InputFollower& operator=(const InputFollower&) = delete;
@@ -30,11 +40,14 @@ class InputFollower {
 
  private:
   void run();
+  void stepFailed(const std::string& what);
 
   ModuleHealth& health_;
   std::string source_;
   std::function<bool()> step_;
+  std::function<std::string()> skip_;
   std::chrono::milliseconds idle_;
+  int failures_ = 0;  // of the current record, in a row
   std::atomic<bool> stopping_{false};
   std::thread thread_;
 };

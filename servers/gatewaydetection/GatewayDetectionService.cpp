@@ -30,7 +30,7 @@ GatewayDetectionService::GatewayDetectionService(const GatewayDetectorConfig& co
       health_(health),
       events_(options_.eventCapacity),
       pacer_(options_.checkpointIntervalS),
-      follower_(health, "laser", [this] { return followOnce(); }) {
+      follower_(health, "laser", [this] { return followOnce(); }, [this] { return skipFailingScan(); }) {
   DetectionCheckpoint saved = loadCheckpoint(options_.checkpointFile);
   for (GatewayEvent& e : saved.events) events_.push(std::move(e));
   detector_ = std::make_unique<GatewayDetector>(config, std::move(classifier), std::move(saved.detector));
@@ -48,7 +48,7 @@ bool GatewayDetectionService::followOnce() {
   {
     std::lock_guard lock(mutex_);
     if (finished_) return false;
-    last = detector_->lastScan();
+    last = std::max(detector_->lastScan(), skipScan_);  // a skipped last scan counts as processed
   }
   const DataBatch<LaserScan> batch = laser_.scansSince(last, options_.fetchBatch);
   if (batch.records.empty()) {
@@ -63,6 +63,8 @@ bool GatewayDetectionService::followOnce() {
   if (batch.records.front().id != last + 1) health_.add("scans_missed", batch.records.front().id - last - 1);
   std::lock_guard lock(mutex_);
   for (const LaserScan& scan : batch.records) {
+    if (scan.id == skipScan_) continue;
+    processing_ = scan.id;
     for (GatewayEvent& e : detector_->addScan(scan, scan.odometry)) {
       health_.add(e.kind == GatewayEventKind::Traversed ? "traversals" : "gateway_reports");
       events_.push(std::move(e));
@@ -71,6 +73,13 @@ bool GatewayDetectionService::followOnce() {
   }
   if (pacer_.due()) checkpoint();
   return true;
+}
+
+std::string GatewayDetectionService::skipFailingScan() {
+  std::lock_guard lock(mutex_);
+  skipScan_ = processing_;
+  health_.add("scans_skipped");
+  return "scan " + std::to_string(skipScan_);
 }
 
 void GatewayDetectionService::checkpoint() {

@@ -55,6 +55,8 @@ class GatewayDetectionService {
  private:
   bool followOnce();  // false when there was nothing new
   void checkpoint();  // under lock
+  // A scan the detector failed on kAttemptsPerRecord times (InputFollower.h) is left out.
+  std::string skipFailingScan();
 
   GatewayDetectionServiceOptions options_;
   LaserClient laser_;
@@ -64,6 +66,8 @@ class GatewayDetectionService {
   DataBuffer<GatewayEvent> events_;
   CheckpointPacer pacer_;
   bool finished_ = false;
+  DataId processing_ = 0;  // the scan being detected in
+  DataId skipScan_ = 0;    // the scan left out
   InputFollower follower_;  // last: it stops before the rest goes
 };
 

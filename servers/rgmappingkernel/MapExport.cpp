@@ -4,6 +4,7 @@
 #include <filesystem>
 
 #include "core/common/Errors.h"
+#include "core/rgmap/export/MapServerWriter.h"
 #include "core/rgmap/export/OccupancyMap.h"
 #include "core/rgmap/export/RgMapJson.h"
 #include "core/rgmap/export/RgMapPng.h"
@@ -11,23 +12,21 @@
 
 namespace rgnav {
 
-std::string exportMapFiles(const RgMappingKernel& kernel, const std::string& dir, const std::string& name,
-                           bool occupancy) {
-  if (dir.empty()) throw InvalidArgumentError("exportMap: no directory given");
-  if (name.empty() || name.find('/') != std::string::npos)
-    throw InvalidArgumentError("exportMap: '" + name + "' is no file name");
+MapExportData exportDataOf(const RgMappingKernel& kernel, bool occupancy) {
   if (kernel.state().scans.empty()) throw NotAvailableError("exportMap: the map has no scans yet");
-  std::error_code error;
-  std::filesystem::create_directories(dir, error);
-  if (error) throw FileError(dir + ": cannot create: " + error.message());
-  const RgMapSnapshot map = snapshotOf(kernel);
+  MapExportData data{snapshotOf(kernel), std::nullopt};
+  if (occupancy) data.occupancy = occupancyMapOf(kernel.state());
+  return data;
+}
+
+std::string writeMapExport(const MapExportData& data, const std::string& dir, const std::string& name) {
   const std::string base = (std::filesystem::path(dir) / name).string() + ".rgmap";
-  writeRgMapJson(base + ".json", map);
-  writeRgMapSvg(base + ".svg", map);
-  exportRgMapPng(base + ".png", map);
+  writeRgMapJson(base + ".json", data.map);
+  writeRgMapSvg(base + ".svg", data.map);
+  exportRgMapPng(base + ".png", data.map);
   std::string files = base + ".json\n" + base + ".svg\n" + base + ".png\n";
-  if (occupancy) {
-    const MapServerFiles grid = exportOccupancyMap(dir, name, kernel.state());
+  if (data.occupancy) {
+    const MapServerFiles grid = writeMapServerMap(dir, name, *data.occupancy);
     files += grid.imagePath + "\n" + grid.yamlPath + "\n";
   }
   return files;

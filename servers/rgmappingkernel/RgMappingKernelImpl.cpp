@@ -1,87 +1,120 @@
 // The RGMappingKernel.idl servant (see RgMappingKernelImpl.h).
 #include "servers/rgmappingkernel/RgMappingKernelImpl.h"
 
-#include <algorithm>
-
 #include "clientlibs/common/convert.h"
 #include "clientlibs/gatewaydetection/convert.h"
 #include "clientlibs/rgmappingkernel/convert.h"
-#include "servers/common/IdlErrors.h"
-#include "servers/rgmappingkernel/MapExport.h"
+#include "servers/common/WireChecks.h"
 
 namespace rgnav {
 
-RgMappingKernelImpl::RgMappingKernelImpl(ServerRuntime& runtime, RgMappingKernelService& service, std::uint32_t maxBatch)
-    : ServiceServant(runtime), service_(service), maxBatch_(maxBatch) {}
+namespace {
+constexpr Raises kArgs = Raises::InvalidArgument;
+constexpr Raises kLookup = Raises::InvalidArgument | Raises::NotAvailable;
+}  // namespace
 
-RGNav::RgMapSummary RgMappingKernelImpl::summary() { return toIdl(service_.summary()); }
+RgMappingKernelImpl::RgMappingKernelImpl(ServerRuntime& runtime, RgMappingKernelService& service,
+                                         std::uint32_t maxBatch, ExportRoot exportRoot)
+    : ServiceServant(runtime), service_(service), maxBatch_(maxBatch), exportRoot_(std::move(exportRoot)) {}
+
+RGNav::RgMapSummary RgMappingKernelImpl::summary() {
+  return serve(Raises::FailedOnly, [&] { return toIdl(service_.summary()); });
+}
 
 RGNav::RegionInfo* RgMappingKernelImpl::currentRegion() {
-  return new RGNav::RegionInfo(toIdl(withIdlErrors([&] { return service_.currentRegion(); })));
+  return serve(Raises::NotAvailable, [&] { return new RGNav::RegionInfo(toIdl(service_.currentRegion())); });
 }
 
 RGNav::RegionInfo* RgMappingKernelImpl::regionById(RGNav::RegionId id) {
-  return new RGNav::RegionInfo(toIdl(withIdlErrors([&] { return service_.region(id); })));
+  return serve(kLookup, [&] {
+    wire::requireId(id, "id");
+    return new RGNav::RegionInfo(toIdl(service_.region(id)));
+  });
 }
 
 RGNav::RegionSummarySeq* RgMappingKernelImpl::regions() {
-  return new RGNav::RegionSummarySeq(
-      toIdlSeq<RGNav::RegionSummarySeq>(service_.regions(), [](const RegionSummaryView& r) { return toIdl(r); }));
+  return serve(Raises::FailedOnly, [&] {
+    return new RGNav::RegionSummarySeq(
+        toIdlSeq<RGNav::RegionSummarySeq>(service_.regions(), [](const RegionSummaryView& r) { return toIdl(r); }));
+  });
 }
 
 RGNav::RgGatewaySeq* RgMappingKernelImpl::gateways() {
-  return new RGNav::RgGatewaySeq(
-      toIdlSeq<RGNav::RgGatewaySeq>(service_.gateways(), [](const GatewayView& g) { return toIdl(g); }));
+  return serve(Raises::FailedOnly, [&] {
+    return new RGNav::RgGatewaySeq(
+        toIdlSeq<RGNav::RgGatewaySeq>(service_.gateways(), [](const GatewayView& g) { return toIdl(g); }));
+  });
 }
 
-RGNav::RgGraphInfo* RgMappingKernelImpl::graph() { return new RGNav::RgGraphInfo(toIdl(service_.graph())); }
+RGNav::RgGraphInfo* RgMappingKernelImpl::graph() {
+  return serve(Raises::FailedOnly, [&] { return new RGNav::RgGraphInfo(toIdl(service_.graph())); });
+}
 
 RGNav::RgPath* RgMappingKernelImpl::findPath(RGNav::RegionId startRegion, const RGNav::Point2D& start,
                                              RGNav::RegionId goalRegion, const RGNav::Point2D& goal) {
-  return new RGNav::RgPath(toIdl(withIdlErrors([&] {
-    return service_.findPath(RgPlace{startRegion, fromIdl(start)}, RgPlace{goalRegion, fromIdl(goal)});
-  })));
+  return serve(kLookup, [&] {
+    wire::requireId(startRegion, "startRegion");
+    wire::requireFinite(start, "start");
+    wire::requireId(goalRegion, "goalRegion");
+    wire::requireFinite(goal, "goal");
+    return new RGNav::RgPath(
+        toIdl(service_.findPath(RgPlace{startRegion, fromIdl(start)}, RgPlace{goalRegion, fromIdl(goal)})));
+  });
 }
 
-void RgMappingKernelImpl::nameRegion(RGNav::RegionId id, const char* name) {
-  withIdlErrors([&] {
-    service_.nameRegion(id, name);
-    return 0;
+void RgMappingKernelImpl::nameRegion(RGNav::RequestId requestId, RGNav::RegionId id, const char* name) {
+  serve(kArgs, [&] {
+    wire::requireId(requestId, "requestId");
+    wire::requireId(id, "id");
+    service_.nameRegion(requestId, id, wire::checkedName(name, "name"));
   });
 }
 
 RGNav::RegionId RgMappingKernelImpl::regionByName(const char* name) {
-  return withIdlErrors([&] { return service_.regionByName(name); });
+  return serve(kLookup, [&] { return service_.regionByName(wire::checkedName(name, "name", false)); });
 }
 
-void RgMappingKernelImpl::nameObject(RGNav::RegionId region, const RGNav::Point2D& atInRegion, const char* name) {
-  withIdlErrors([&] {
-    service_.nameObject(region, fromIdl(atInRegion), name);
-    return 0;
+void RgMappingKernelImpl::nameObject(RGNav::RequestId requestId, RGNav::RegionId region,
+                                     const RGNav::Point2D& atInRegion, const char* name) {
+  serve(kArgs, [&] {
+    wire::requireId(requestId, "requestId");
+    wire::requireId(region, "region");
+    wire::requireFinite(atInRegion, "atInRegion");
+    service_.nameObject(requestId, region, fromIdl(atInRegion), wire::checkedName(name, "name"));
   });
 }
 
 RGNav::NamedObject RgMappingKernelImpl::objectByName(const char* name) {
-  return toIdl(withIdlErrors([&] { return service_.objectByName(name); }));
+  return serve(kLookup, [&] { return toIdl(service_.objectByName(wire::checkedName(name, "name", false))); });
 }
 
-RGNav::RegionId RgMappingKernelImpl::mergeRegions(RGNav::RegionId a, RGNav::RegionId b) {
-  return withIdlErrors([&] { return service_.mergeRegions(a, b); });
+RGNav::RegionId RgMappingKernelImpl::mergeRegions(RGNav::RequestId requestId, RGNav::RegionId a, RGNav::RegionId b) {
+  return serve(kArgs, [&] {
+    wire::requireId(requestId, "requestId");
+    wire::requireId(a, "a");
+    wire::requireId(b, "b");
+    return service_.mergeRegions(requestId, a, b);
+  });
 }
 
 RGNav::RgMapEventBatch* RgMappingKernelImpl::eventsSince(RGNav::RgMapEventId afterId, CORBA::ULong maxCount,
-                                                         const char*) {
-  const RgMapEventBatch batch =
-      withIdlErrors([&] { return service_.eventsSince(afterId, std::min<std::size_t>(maxCount, maxBatch_)); });
-  runtime_.health().add("events_served", batch.events.size());
-  return new RGNav::RgMapEventBatch(toIdl(batch));
+                                                         const char* consumer) {
+  return serve(kArgs, [&] {
+    const std::size_t count = wire::cappedCount(maxCount, maxBatch_, "maxCount");
+    wire::checkedName(consumer, "consumer");
+    const RgMapEventBatch batch = service_.eventsSince(afterId, count);
+    runtime_.health().add("events_served", batch.events.size());
+    return new RGNav::RgMapEventBatch(toIdl(batch));
+  });
 }
 
 char* RgMappingKernelImpl::exportMap(const char* directory, const char* name, CORBA::Boolean occupancy) {
-  const std::string files = withIdlErrors([&] {
-    return service_.withKernel([&](const RgMappingKernel& kernel) { return exportMapFiles(kernel, directory, name, occupancy); });
+  return serve(kLookup, [&] {
+    requireFileName(name, "name");
+    const std::string dir = exportRoot_.directoryFor(directory);
+    const std::string files = writeMapExport(service_.exportData(occupancy), dir, name);
+    return CORBA::string_dup(files.c_str());
   });
-  return CORBA::string_dup(files.c_str());
 }
 
 }  // namespace rgnav

@@ -35,10 +35,14 @@ RgMappingKernelService::RgMappingKernelService(const RgMappingKernelConfig& conf
       detection_(settings, detectionObject),
       health_(health),
       kernel_(std::make_unique<RgMappingKernel>(config, loadCheckpoint(options_.checkpointFile))),
-      follower_(health, "inputs", [this] { return followOnce(); }) {
+      writer_([file = options_.checkpointFile](const std::string& journal, const std::string& map) {
+                if (!journal.empty()) appendToFileDurably(journalOf(file), journal);
+                writeFileAtomically(file, map);
+              },
+              health, kernel_->state().lastPoseRevision),
+      follower_(health, "inputs", [this] { return followOnce(); }, [this] { return skipFailingRecord(); }) {
   checkpointedScan_ = kernel_->state().lastScanId;
   checkpointedEvent_ = kernel_->state().events.empty() ? 0 : kernel_->state().events.back().id;
-  checkpointedRevision_ = kernel_->state().lastPoseRevision;
   // The journal with exactly the checkpoint's scans: what a crash appended ahead of the map goes.
   if (!options_.checkpointFile.empty())
     writeFileAtomically(journalOf(options_.checkpointFile), scanJournalLines(kernel_->state()));
@@ -50,7 +54,10 @@ RgMappingKernelService::~RgMappingKernelService() { stop(); }
 
 void RgMappingKernelService::start() { follower_.start(); }
 
-void RgMappingKernelService::stop() { follower_.stop(); }
+void RgMappingKernelService::stop() {
+  follower_.stop();
+  writer_.flush();
+}
 
 bool RgMappingKernelService::fetchScans() {
   DataId after;
@@ -70,7 +77,7 @@ bool RgMappingKernelService::fetchRevisions() {
   {
     std::lock_guard lock(mutex_);
     // What a restart from the checkpoint would have applied: the ScanMapper keeps what is after it.
-    durable = options_.checkpointFile.empty() ? kernel_->state().lastPoseRevision : checkpointedRevision_;
+    durable = options_.checkpointFile.empty() ? kernel_->state().lastPoseRevision : writer_.durableRevision();
     known = revisions_.empty() ? kernel_->state().lastPoseRevision : revisions_.back().revision;
   }
   const std::vector<PoseRevisionInfo> revisions = scanMapper_.revisionsSince(durable);
@@ -127,6 +134,7 @@ bool RgMappingKernelService::applyRevision(const PoseRevisionInfo& revision) {
   bool replaced;
   {
     std::lock_guard lock(mutex_);
+    feeding_ = Feeding::Revision;
     replaced = kernel_->state().lastScanId >= revision.atScan;  // learned of too late
   }
   std::vector<CorrectedPose> poses;
@@ -151,6 +159,10 @@ bool RgMappingKernelService::applyRevision(const PoseRevisionInfo& revision) {
 }
 
 void RgMappingKernelService::applyFinalPoses() {
+  {
+    std::lock_guard lock(mutex_);
+    feeding_ = Feeding::FinalPoses;
+  }
   std::vector<CorrectedPose> poses = posesOfKernelScans(std::nullopt);
   const std::uint64_t revision = scanMapper_.revision();
   std::lock_guard lock(mutex_);
@@ -169,6 +181,7 @@ std::optional<PoseRevisionInfo> RgMappingKernelService::mapPending(bool& fed) {
   const auto feedEventsUpTo = [&](DataId scan) {
     while (!events_.empty() && events_.front().scanId <= scan) {
       const GatewayEvent& e = events_.front();
+      feeding_ = Feeding::Event;
       kernel_->addGatewayEvent(e, correctedPoseOf(e.gateway.lastScan));
       health_.add("gateway_events_mapped");
       events_.pop_front();
@@ -179,6 +192,7 @@ std::optional<PoseRevisionInfo> RgMappingKernelService::mapPending(bool& fed) {
     const CorrectedScan& s = scans_.front();
     feedEventsUpTo(s.scan.id - 1);
     if (!revisions_.empty() && revisions_.front().atScan <= s.scan.id) return revisions_.front();
+    feeding_ = Feeding::Scan;
     kernel_->addScan(s.scan, s.mapped);
     health_.add("scans_mapped");
     const DataId id = s.scan.id;
@@ -197,6 +211,7 @@ bool RgMappingKernelService::followOnce() {
   {
     std::lock_guard lock(mutex_);
     if (finished_) return false;
+    feeding_ = Feeding::Nothing;
   }
   // Scans before revisions: a revision made while a scan was taken in is known once that scan is.
   const bool scans = fetchScans();
@@ -227,19 +242,47 @@ bool RgMappingKernelService::followOnce() {
   return scans || revisions || events || fed;
 }
 
+std::string RgMappingKernelService::skipFailingRecord() {
+  std::lock_guard lock(mutex_);
+  health_.add("input_records_left_out");
+  switch (feeding_) {
+    case Feeding::Scan:
+      if (scans_.empty()) break;
+      {
+        const DataId id = scans_.front().scan.id;
+        scans_.pop_front();
+        return "corrected scan " + std::to_string(id);
+      }
+    case Feeding::Event:
+      if (events_.empty()) break;
+      {
+        const GatewayEventId id = events_.front().id;
+        events_.pop_front();
+        return "gateway event " + std::to_string(id);
+      }
+    case Feeding::Revision:
+      if (revisions_.empty()) break;
+      {
+        const std::uint64_t number = revisions_.front().revision;
+        revisions_.pop_front();
+        return "pose revision " + std::to_string(number);
+      }
+    case Feeding::FinalPoses:
+      finished_ = true;  // the map keeps the poses as mapped
+      checkpoint();
+      return "the final poses";
+    case Feeding::Nothing:
+      break;
+  }
+  return "nothing (the step failed while fetching, not while mapping)";
+}
+
 void RgMappingKernelService::checkpoint() {
   if (options_.checkpointFile.empty()) return;
-  try {
-    const std::string newScans = scanJournalLines(kernel_->state(), checkpointedScan_);
-    if (!newScans.empty()) appendToFileDurably(journalOf(options_.checkpointFile), newScans);
-    writeFileAtomically(options_.checkpointFile, serializeRgMap(kernel_->state()));
-    checkpointedScan_ = kernel_->state().lastScanId;
-    checkpointedEvent_ = kernel_->state().events.empty() ? 0 : kernel_->state().events.back().id;
-    checkpointedRevision_ = kernel_->state().lastPoseRevision;
-    health_.clearError("checkpoint");
-  } catch (const FileError& e) {
-    health_.setError("checkpoint", e.what());
-  }
+  writer_.submit(scanJournalLines(kernel_->state(), checkpointedScan_), serializeRgMap(kernel_->state()),
+                 kernel_->state().lastPoseRevision);
+  checkpointedScan_ = kernel_->state().lastScanId;
+  checkpointedEvent_ = kernel_->state().events.empty() ? 0 : kernel_->state().events.back().id;
 }
 
 MapSummaryView RgMappingKernelService::summary() {
@@ -282,9 +325,11 @@ PathView RgMappingKernelService::findPath(const RgPlace& start, const RgPlace& g
   return pathView(rgnav::findPath(kernel_->graph(), start, goal));
 }
 
-void RgMappingKernelService::nameRegion(RegionId id, const std::string& name) {
+void RgMappingKernelService::nameRegion(std::uint64_t requestId, RegionId id, const std::string& name) {
   std::lock_guard lock(mutex_);
+  if (requests_.answered(requestId)) return;
   kernel_->nameRegion(id, name);
+  requests_.record(requestId, 0);
   checkpoint();
 }
 
@@ -295,9 +340,12 @@ RegionId RgMappingKernelService::regionByName(const std::string& name) {
   return *id;
 }
 
-void RgMappingKernelService::nameObject(RegionId region, const Eigen::Vector2d& atInRegion, const std::string& name) {
+void RgMappingKernelService::nameObject(std::uint64_t requestId, RegionId region, const Eigen::Vector2d& atInRegion,
+                                        const std::string& name) {
   std::lock_guard lock(mutex_);
+  if (requests_.answered(requestId)) return;
   kernel_->nameObject(region, atInRegion, name);
+  requests_.record(requestId, 0);
   checkpoint();
 }
 
@@ -308,11 +356,18 @@ RgMappingKernel::NamedObject RgMappingKernelService::objectByName(const std::str
   return *found;
 }
 
-RegionId RgMappingKernelService::mergeRegions(RegionId a, RegionId b) {
+RegionId RgMappingKernelService::mergeRegions(std::uint64_t requestId, RegionId a, RegionId b) {
   std::lock_guard lock(mutex_);
+  if (const std::optional<std::uint64_t> merged = requests_.answered(requestId)) return *merged;
   const RegionId merged = kernel_->mergeRegions(a, b);
+  requests_.record(requestId, merged);
   checkpoint();
   return merged;
+}
+
+MapExportData RgMappingKernelService::exportData(bool occupancy) {
+  std::lock_guard lock(mutex_);
+  return exportDataOf(*kernel_, occupancy);
 }
 
 RgMapEventBatch RgMappingKernelService::eventsSince(RgMapEventId afterId, std::size_t maxCount) {

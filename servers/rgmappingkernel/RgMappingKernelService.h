@@ -12,10 +12,12 @@
 // "pose_revisions_replaced"; revisions it never learned of: "pose_revisions_not_kept"). It tells
 // the ScanMapper which revision its last checkpoint holds, so that the ScanMapper keeps only the
 // revisions after it (RevisionFollowers.h). It checkpoints the map atomically after every batch
-// that changed its structure and at least every `checkpointScans` scans, and at the end, with the
-// scans' laser data in a journal beside it (`checkpointFile`.scans, RgMapCodec.h): each
-// checkpoint appends the new scans to the journal, then replaces the map. After a restart it
-// resumes after the last scan, event and pose revision the checkpoint holds.
+// that changed its structure, after every name or merge, at least every `checkpointScans` scans,
+// and at the end, with the scans' laser data in a journal beside it (`checkpointFile`.scans,
+// RgMapCodec.h): each checkpoint appends the new scans to the journal, then replaces the map. The
+// files are written by a thread of their own (CheckpointWriter.h), so no call waits for them.
+// After a restart it resumes after the last scan, event and pose revision the checkpoint holds.
+// Names and merges carry request IDs and act once per ID (RequestLog.h).
 #pragma once
 
 #include <deque>
@@ -27,6 +29,9 @@
 #include "clientlibs/scanmapper/ScanMapperClient.h"
 #include "core/rgmap/kernel/RgMapViews.h"
 #include "servers/common/InputFollower.h"
+#include "servers/common/RequestLog.h"
+#include "servers/rgmappingkernel/CheckpointWriter.h"
+#include "servers/rgmappingkernel/MapExport.h"
 
 namespace rgnav {
 
@@ -55,19 +60,16 @@ class RgMappingKernelService {
   std::vector<GatewayView> gateways();
   GraphView graph();
   PathView findPath(const RgPlace& start, const RgPlace& goal);
-  void nameRegion(RegionId id, const std::string& name);
+  // Names, name removals and merges act once per requestId: a repeated ID gets the first answer.
+  void nameRegion(std::uint64_t requestId, RegionId id, const std::string& name);
   RegionId regionByName(const std::string& name);
-  void nameObject(RegionId region, const Eigen::Vector2d& atInRegion, const std::string& name);
+  void nameObject(std::uint64_t requestId, RegionId region, const Eigen::Vector2d& atInRegion, const std::string& name);
   // Throws NotAvailableError if no object has the name.
   RgMappingKernel::NamedObject objectByName(const std::string& name);
-  RegionId mergeRegions(RegionId a, RegionId b);
+  RegionId mergeRegions(std::uint64_t requestId, RegionId a, RegionId b);
   RgMapEventBatch eventsSince(RgMapEventId afterId, std::size_t maxCount);
-  // Runs `write` on the kernel under the lock (exports).
-  template <class F>
-  auto withKernel(F&& write) {
-    std::lock_guard lock(mutex_);
-    return write(*kernel_);
-  }
+  // What an export writes, taken under the lock (the files are written outside it).
+  MapExportData exportData(bool occupancy);
 
  private:
   bool followOnce();          // false when there was nothing new
@@ -83,7 +85,9 @@ class RgMappingKernelService {
   bool applyRevision(const PoseRevisionInfo& revision);
   void applyFinalPoses();     // once the input ended: the ScanMapper's final poses
   Pose2D correctedPoseOf(DataId scan) const;  // under lock; the kernel's pose of a scan it holds
-  void checkpoint();          // under lock
+  void checkpoint();          // under lock: hands the checkpoint to the writer
+  // Leaves out the input record the kernel failed on kAttemptsPerRecord times (InputFollower.h).
+  std::string skipFailingRecord();
 
   RgMappingKernelServiceOptions options_;
   ScanMapperClient scanMapper_;
@@ -96,9 +100,12 @@ class RgMappingKernelService {
   std::deque<GatewayEvent> events_;    // fetched, not fed yet
   DataId detectionLastScan_ = 0;       // the detector has processed every scan up to this one
   bool scansEnded_ = false, eventsEnded_ = false, finished_ = false;
-  RgMapEventId checkpointedEvent_ = 0;
+  enum class Feeding { Nothing, Scan, Event, Revision, FinalPoses };
+  Feeding feeding_ = Feeding::Nothing;  // what the kernel is being fed
+  RgMapEventId checkpointedEvent_ = 0;  // as of the last checkpoint handed to the writer
   DataId checkpointedScan_ = 0;
-  std::uint64_t checkpointedRevision_ = 0;  // the pose revision the last checkpoint holds
+  RequestLog requests_;
+  CheckpointWriter writer_;
   InputFollower follower_;  // last: it stops before the rest goes
 };
 

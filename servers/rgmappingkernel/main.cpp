@@ -10,7 +10,7 @@ namespace po = boost::program_options;
 using namespace rgnav;
 
 int main(int argc, char** argv) {
-  std::string scanMapperObject, detectionObject, objectName;
+  std::string scanMapperObject, detectionObject, objectName, exportRoot;
   std::uint32_t maxBatch = 0, fetch = 0;
   po::options_description options("RGMappingKernel options");
   options.add_options()
@@ -19,7 +19,9 @@ int main(int argc, char** argv) {
        "GatewayDetection module to follow")
       ("object", po::value(&objectName)->default_value("RGMappingKernel"), "object name of the interface")
       ("fetch", po::value(&fetch)->default_value(100), "records asked from each input per call")
-      ("max-batch", po::value(&maxBatch)->default_value(500), "most events one call returns");
+      ("max-batch", po::value(&maxBatch)->default_value(500), "most events one call returns")
+      ("export-root", po::value(&exportRoot)->default_value(""),
+       "the only directory exportMap writes into (default: <run dir>/exports beside the state directories)");
   std::unique_ptr<RgMappingKernelService> service;
   const int code = runServer(argc, argv, options, [&](ServerRuntime& runtime) {
     RgMappingKernelServiceOptions serviceOptions;
@@ -29,11 +31,12 @@ int main(int argc, char** argv) {
     settings.retryBudget = std::chrono::milliseconds(2000);
     service = std::make_unique<RgMappingKernelService>(RgMappingKernelConfig{}, settings, scanMapperObject,
                                                        detectionObject, serviceOptions, runtime.health());
-    runtime.activate(objectName, new RgMappingKernelImpl(runtime, *service, maxBatch));
+    const ExportRoot root(exportRoot.empty() ? defaultExportRoot(runtime.server().stateDir) : exportRoot);
+    runtime.activate(objectName, new RgMappingKernelImpl(runtime, *service, maxBatch, root));
     runtime.onShutdown([&] { service->stop(); });
     service->start();
     std::cerr << "RG mapping kernel following " << scanMapperObject << " and " << detectionObject
-              << ", resuming after scan " << service->summary().lastScan << ", serving on "
+              << ", resuming after scan " << service->summary().lastScan << ", exporting into " << root.path() << ", serving on "
               << runtime.server().endpoint.str() << std::endl;
   });
   return code;

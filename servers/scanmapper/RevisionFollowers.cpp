@@ -5,8 +5,11 @@
 
 namespace rgnav {
 
+RevisionFollowers::RevisionFollowers(std::set<std::string> known) : known_(std::move(known)) {}
+
 void RevisionFollowers::asked(const std::string& follower, std::uint64_t applied, double now) {
-  if (follower.empty()) return;
+  std::erase_if(cursors_, [now](const auto& entry) { return now - entry.second.lastAsked >= kIdleSeconds; });
+  if (!known_.contains(follower)) return;
   cursors_[follower] = Cursor{applied, now};
 }
 

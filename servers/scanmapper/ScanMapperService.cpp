@@ -3,6 +3,8 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
+#include <limits>
 #include <optional>
 
 #include "clientlibs/common/ClientConnection.h"
@@ -12,6 +14,15 @@
 namespace rgnav {
 
 namespace {
+
+// A scan the mapper failed on, as it takes it in instead: no ranges (nothing to align), and the
+// odometry of the scan before if its own is not finite.
+LaserScan withoutMeasurements(LaserScan scan, const Pose2D& previousOdometry) {
+  std::fill(scan.ranges.begin(), scan.ranges.end(), std::numeric_limits<float>::quiet_NaN());
+  if (!std::isfinite(scan.odometry.x) || !std::isfinite(scan.odometry.y) || !std::isfinite(scan.odometry.theta))
+    scan.odometry = previousOdometry;
+  return scan;
+}
 
 SlamState loadCheckpoint(const std::string& file) {
   const std::optional<std::string> saved = readCheckpoint(file);
@@ -31,9 +42,10 @@ ScanMapperService::ScanMapperService(const SlamConfig& config, const ClientSetti
       laser_(laserSettings, laserObject),
       health_(health),
       mapper_(config, loadCheckpoint(options_.checkpointFile)),
+      followers_(options_.revisionFollowers),
       pacer_(options_.checkpointIntervalS),
       scans_(options_.bufferCapacity),
-      follower_(health, "laser", [this] { return step(); }) {
+      follower_(health, "laser", [this] { return step(); }, [this] { return skipFailingScan(); }) {
   health_.set("resumed_after_scan", mapper_.lastInputId());
 }
 
@@ -61,6 +73,7 @@ void ScanMapperService::refillBuffer() {
   while (after < last && !follower_.stopping()) {
     const auto batch = laser_.scansSince(after, std::min<std::uint32_t>(options_.fetchBatch, static_cast<std::uint32_t>(last - after)));
     if (batch.records.empty()) break;  // no longer held by the Laser module
+    std::lock_guard lock(mutex_);
     for (const LaserScan& scan : batch.records) {
       if (scan.id > last) break;
       keep(scan);
@@ -70,7 +83,7 @@ void ScanMapperService::refillBuffer() {
 }
 
 void ScanMapperService::keep(const LaserScan& scan) {
-  std::lock_guard lock(mutex_);
+  if (!scans_.records().empty() && scan.id <= scans_.latestId()) return;  // kept before a failed attempt
   if (!scans_.records().empty() && scan.id != scans_.latestId() + 1) {
     health_.add("scan_gaps");
     scans_ = DataBuffer<LaserScan>(options_.bufferCapacity);
@@ -95,10 +108,13 @@ bool ScanMapperService::followOnce() {
     }
     return false;
   }
-  for (const LaserScan& scan : batch.records) {
-    keep(scan);
+  for (const LaserScan& fetched : batch.records) {
     std::lock_guard lock(mutex_);
+    processing_ = fetched.id;
+    const LaserScan scan = fetched.id == skipScan_ ? withoutMeasurements(fetched, previousOdometry_) : fetched;
+    keep(scan);
     const ScanOutcome outcome = mapper_.addScan(scan);
+    previousOdometry_ = scan.odometry;
     health_.add("scans_mapped");
     health_.add("keyframes", outcome.keyframe);
     health_.add("loop_constraints", outcome.loopsAdded);
@@ -106,6 +122,13 @@ bool ScanMapperService::followOnce() {
   std::lock_guard lock(mutex_);
   if (pacer_.due()) checkpoint();
   return true;
+}
+
+std::string ScanMapperService::skipFailingScan() {
+  std::lock_guard lock(mutex_);
+  skipScan_ = processing_;
+  health_.add("scans_without_ranges");
+  return "the ranges of scan " + std::to_string(skipScan_);
 }
 
 void ScanMapperService::checkpoint() {

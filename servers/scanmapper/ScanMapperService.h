@@ -12,6 +12,7 @@
 
 #include <mutex>
 #include <optional>
+#include <set>
 #include <string>
 
 #include "clientlibs/laser/LaserClient.h"
@@ -29,6 +30,7 @@ struct ScanMapperServiceOptions {
   std::size_t bufferCapacity = 20000;   // scans held for consumers
   std::uint32_t fetchBatch = 100;       // scans asked from the Laser module per call
   double checkpointIntervalS = 1.0;     // at least this long between checkpoints while mapping (CheckpointPacer.h)
+  std::set<std::string> revisionFollowers{"RGMappingKernel"};  // whose revisionsSince calls count (RevisionFollowers.h)
 };
 
 class ScanMapperService {
@@ -63,7 +65,10 @@ class ScanMapperService {
   bool step();                  // refills the buffer once, then followOnce()
   bool followOnce();            // false when there was nothing new
   void refillBuffer();          // after a restart: the scans the checkpoint covers
-  void keep(const LaserScan& scan);
+  void keep(const LaserScan& scan);  // under lock
+  // A scan the mapper failed on kAttemptsPerRecord times (InputFollower.h) is taken in without
+  // its ranges (and with the odometry before it if its own is not finite).
+  std::string skipFailingScan();
   void checkpoint();            // under lock
   bool isKeyframe(DataId id) const;  // under lock
 
@@ -77,6 +82,9 @@ class ScanMapperService {
   DataBuffer<LaserScan> scans_;
   bool finished_ = false;  // the input ended and the final optimisation ran
   bool refilled_ = false;
+  DataId processing_ = 0;       // the scan being taken in
+  DataId skipScan_ = 0;         // the scan to take in without its ranges
+  Pose2D previousOdometry_{};   // of the scan taken in last
   InputFollower follower_;  // last: it stops before the rest goes
 };
 

@@ -10,6 +10,7 @@ using namespace rgnav;
 
 int main(int argc, char** argv) {
   std::string laserObject, objectName;
+  std::vector<std::string> revisionFollowers;
   std::size_t buffer = 0;
   std::uint32_t maxBatch = 0, fetch = 0;
   po::options_description options("ScanMapper options");
@@ -18,12 +19,15 @@ int main(int argc, char** argv) {
       ("object", po::value(&objectName)->default_value("ScanMapper"), "object name of the ScanMapper interface")
       ("buffer", po::value(&buffer)->default_value(20000), "corrected scans held for consumers")
       ("fetch", po::value(&fetch)->default_value(100), "scans asked from the Laser module per call")
-      ("max-batch", po::value(&maxBatch)->default_value(500), "most records one call returns");
+      ("max-batch", po::value(&maxBatch)->default_value(500), "most records one call returns")
+      ("revision-follower", po::value(&revisionFollowers)->multitoken()->default_value({"RGMappingKernel"}, "RGMappingKernel"),
+       "module whose revisionsSince calls decide which pose revisions are kept (repeatable)");
   std::unique_ptr<ScanMapperService> service;
   const int code = runServer(argc, argv, options, [&](ServerRuntime& runtime) {
     ScanMapperServiceOptions serviceOptions;
     serviceOptions.bufferCapacity = buffer;
     serviceOptions.fetchBatch = fetch;
+    serviceOptions.revisionFollowers = {revisionFollowers.begin(), revisionFollowers.end()};
     if (!runtime.server().stateDir.empty()) serviceOptions.checkpointFile = runtime.server().stateDir + "/slam.state";
     ClientSettings laserSettings = runtime.clientSettings();
     laserSettings.retryBudget = std::chrono::milliseconds(2000);

@@ -65,8 +65,8 @@ json finishedMap(TestCluster& cluster, double limitSeconds) {
     if (std::chrono::steady_clock::now() > giveUp) throw std::runtime_error("the map was not finished in time");
     sleepUntilOrInterrupted(std::chrono::steady_clock::now() + std::chrono::milliseconds(100));
   }
-  kernel.exportMap(cluster.dir() + "/out", "map", false);
-  std::ifstream in(cluster.dir() + "/out/map.rgmap.json");
+  kernel.exportMap("", "map", false);  // into the kernel's default export root, <run dir>/exports
+  std::ifstream in(cluster.dir() + "/run/exports/map.rgmap.json");
   return json::parse(in);
 }
 

@@ -76,6 +76,12 @@ class PlaybackIntegrationTest : public CppUnit::TestFixture {
     CPPUNIT_ASSERT_THROW(laser.scan(std::numeric_limits<DataId>::max()), NotAvailableError);
     CPPUNIT_ASSERT_THROW(laser.scansSince(0, 0), InvalidArgumentError);
     CPPUNIT_ASSERT_THROW(laser.scansSince(10, 0), InvalidArgumentError);
+    // An over-long consumer name is refused; no error reaches the client as CORBA::UNKNOWN.
+    TypedConnection<RGNav::Laser> raw("Laser", set.cluster.clientSettings());
+    CPPUNIT_ASSERT_THROW(raw.call("scansSince", [](RGNav::Laser_ptr l) {
+      const std::string name(100000, 'c');
+      RGNav::ScanBatch_var batch = l->scansSince(0, 1, name.c_str());
+    }), BadArgumentError);
     // The server still serves normally after the errors.
     CPPUNIT_ASSERT_EQUAL(kIntelScans, readAllScans(laser, 200).size());
   }

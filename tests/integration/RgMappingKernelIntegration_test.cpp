@@ -8,6 +8,7 @@
 // Freiburg 079 with its dozens of pose revisions: the map does not depend on the modules' timing.
 #include <cppunit/extensions/HelperMacros.h>
 
+#include <cmath>
 #include <cstdlib>
 #include <filesystem>
 #include <map>
@@ -26,6 +27,17 @@ using namespace rgnav;
 using namespace rgnav::testing;
 
 namespace {
+
+// The field a call's BadArgumentError names; "(accepted)" if it succeeded.
+template <class F>
+std::string refusedField(F&& call) {
+  try {
+    call();
+  } catch (const BadArgumentError& e) {
+    return e.field();
+  }
+  return "(accepted)";
+}
 
 std::string modelsFile() { return std::string(std::getenv("RGNAV_ROOT")) + "/config/gateways/gateway-hmms.txt"; }
 
@@ -150,9 +162,34 @@ class RgMappingKernelIntegrationTest : public CppUnit::TestFixture {
     CPPUNIT_ASSERT_THROW(kernel.objectByName("nothing"), NotAvailableError);
     CPPUNIT_ASSERT_THROW(kernel.nameObject(100000, {0.0, 0.0}, "nothing"), InvalidArgumentError);
 
-    const std::string files = kernel.exportMap(cluster.dir() + "/out", "intel", true);
+    // Exports go below the kernel's export root (by default <run dir>/exports), nowhere else.
+    const std::string files = kernel.exportMap("maps", "intel", true);
     for (const char* suffix : {"intel.rgmap.json", "intel.rgmap.svg", "intel.rgmap.png", "intel.pgm", "intel.yaml"})
-      CPPUNIT_ASSERT_MESSAGE(suffix, std::filesystem::exists(cluster.dir() + "/out/" + suffix));
+      CPPUNIT_ASSERT_MESSAGE(suffix, std::filesystem::exists(cluster.dir() + "/run/exports/maps/" + suffix));
+    CPPUNIT_ASSERT_EQUAL(std::string("directory"), refusedField([&] { kernel.exportMap(cluster.dir() + "/out", "x", false); }));
+    CPPUNIT_ASSERT_EQUAL(std::string("directory"), refusedField([&] { kernel.exportMap("../../out", "x", false); }));
+    CPPUNIT_ASSERT_EQUAL(std::string("name"), refusedField([&] { kernel.exportMap("", "../x", false); }));
+    CPPUNIT_ASSERT(!std::filesystem::exists(cluster.dir() + "/out"));
+
+    // Hostile arguments are typed answers naming the field, and the kernel stays up.
+    const double nan = std::nan("");
+    CPPUNIT_ASSERT_EQUAL(std::string("start"), refusedField([&] {
+      kernel.findPath(joined.sideA, {nan, 0.0}, joined.sideB, joined.crossingPoints[1]);
+    }));
+    CPPUNIT_ASSERT_EQUAL(std::string("maxCount"), refusedField([&] { kernel.eventsSince(0, 0); }));
+    CPPUNIT_ASSERT_EQUAL(std::string("name"), refusedField([&] { kernel.nameRegion(joined.sideB, std::string(5000, 'x')); }));
+    CPPUNIT_ASSERT_EQUAL(std::string("id"), refusedField([&] { kernel.region(0); }));
+
+    // A repeated request ID acts once: the second call, for another region, answers as the first
+    // did and names nothing.
+    TypedConnection<RGNav::RGMappingKernel> raw("RGMappingKernel", cluster.clientSettings());
+    const auto nameOnce = [&](RegionId region) {
+      raw.call("nameRegion", [&](RGNav::RGMappingKernel_ptr k) { k->nameRegion(4242, region, "named once"); });
+    };
+    nameOnce(joined.sideA);
+    nameOnce(joined.sideB);
+    CPPUNIT_ASSERT_EQUAL(joined.sideA, kernel.regionByName("named once"));
+    kernel.nameRegion(joined.sideA, "start room");
 
     const RgMapEventBatch events = kernel.eventsSince(0, 100000);
     for (std::size_t i = 0; i < events.events.size(); ++i) CPPUNIT_ASSERT_EQUAL(RgMapEventId(i + 1), events.events[i].id);

@@ -4,6 +4,9 @@
 // while commanded and stops when the commands lapse.
 #include <cppunit/extensions/HelperMacros.h>
 
+#include <cmath>
+#include <limits>
+
 #include <thread>
 
 #include "clientlibs/base/BaseClient.h"
@@ -58,6 +61,14 @@ class SimulatorIntegrationTest : public CppUnit::TestFixture {
     const Pose2D pose = truth.truePose(served[500].id);
     CPPUNIT_ASSERT_DOUBLES_EQUAL(served[500].sensorPose.x, pose.x, 0.5);
     CPPUNIT_ASSERT(truth.roomAt(pose.x, pose.y) >= -1);
+    // A NaN or infinite point is refused naming the coordinate (it was undefined behaviour).
+    try {
+      truth.roomAt(std::nan(""), pose.y);
+      CPPUNIT_FAIL("roomAt(NaN) answered");
+    } catch (const BadArgumentError& e) {
+      CPPUNIT_ASSERT_EQUAL(std::string("x"), e.field());
+    }
+    CPPUNIT_ASSERT_THROW(truth.roomAt(pose.x, std::numeric_limits<double>::infinity()), BadArgumentError);
     CPPUNIT_ASSERT_THROW(truth.truePose(0), InvalidArgumentError);
     CPPUNIT_ASSERT_THROW(truth.truePose(10000000), NotAvailableError);
     BaseClient base(cluster.clientSettings());

@@ -13,6 +13,8 @@ namespace po = boost::program_options;
 
 namespace {
 
+constexpr std::uint32_t kEventBatch = 500;  // events asked per call (the watchdog caps a batch)
+
 void printStatus(const std::vector<rgnav::ModuleProcessInfo>& modules) {
   std::printf("%-18s %-9s %8s %10s %8s  %s\n", "MODULE", "STATE", "PID", "UPTIME_S", "RESTARTS", "LAST EVENT");
   for (const auto& m : modules)
@@ -83,8 +85,10 @@ int main(int argc, char** argv) {
     else if (command == "restart") watchdog.restartModule(module);
     else if (command == "shutdown") watchdog.shutdownSet();
     else if (command == "events") {
-      for (const auto& e : watchdog.eventsSince(after, 100000))
-        std::cout << e.time << " " << e.id << " " << e.module << " " << e.what << " " << e.detail << "\n";
+      for (auto batch = watchdog.eventsSince(after, kEventBatch); !batch.empty();
+           batch = watchdog.eventsSince(batch.back().id, kEventBatch))
+        for (const auto& e : batch)
+          std::cout << e.time << " " << e.id << " " << e.module << " " << e.what << " " << e.detail << "\n";
     } else {
       std::cerr << "rgnav-ctl: unknown command '" << command << "'\n" << desc << std::endl;
       return 2;

@@ -1,12 +1,14 @@
 // rgnav-rgmap: talks to the RG Mapping Kernel module of a running set.
-//   rgnav-rgmap build --label demo --out out --name demo
+//   rgnav-rgmap build --label demo --out <dir> --name demo
 //       follows the map while it is built (a progress line on stderr), waits for the end of the
-//       inputs, exports <out>/<name>.rgmap.json/.svg/.png and prints
+//       inputs, exports <dir>/<name>.rgmap.json/.svg/.png and prints
 //       "<label>: scans=… regions=… gateways=… neutralized=… scans_per_s=…"
 //   rgnav-rgmap regions | gateways | events
 //   rgnav-rgmap name <region> <name> | merge <a> <b> | path <region> <x> <y> <region> <x> <y>
 //   rgnav-rgmap name-object <region> <x> <y> <name> (x, y in the region frame) | object <name>
 //   rgnav-rgmap export <dir> <name> [--occupancy]
+// The kernel writes only below its export root (its --export-root): <dir> is relative to it ("":
+// the root) or an absolute directory inside it.
 #include <chrono>
 #include <cstdio>
 #include <iostream>
@@ -93,7 +95,8 @@ int main(int argc, char** argv) {
       ("naming", po::value(&naming)->default_value(""), "naming service host:port (default: RGNAV_NAMING)")
       ("robot", po::value(&robot)->default_value(""), "robot name (default: RGNAV_ROBOT or tumbot)")
       ("label", po::value(&label)->default_value("map"), "build: the summary line's first word")
-      ("out", po::value(&out)->default_value("out"), "build: directory of the exported files")
+      ("out", po::value(&out)->default_value(""),
+       "build: directory of the exported files, below the kernel's export root (default: the root)")
       ("name", po::value(&name)->default_value("map"), "build: name of the exported files")
       ("occupancy", po::bool_switch(&occupancy), "also export the global metric map (PGM + YAML)")
       ("quiet", po::bool_switch(&quiet), "build: no progress line");
