@@ -5,8 +5,18 @@
 #include <vector>
 
 #include "core/common/Errors.h"
+#include "core/config/ShippedConfig.h"
+#include "core/gateways/detection/GatewayDetectorConfigYaml.h"
+#include "core/rgmap/kernel/RgMappingKernelConfigYaml.h"
+#include "core/slam/SlamConfigYaml.h"
 
 namespace rgnav {
+
+MappingPipelineConfig shippedPipelineConfig() {
+  return {loadSlamConfig(shippedConfigFile("modules/scanmapper.yaml")),
+          loadGatewayDetectorConfig(shippedConfigFile("modules/gatewaydetection.yaml")),
+          loadRgMappingKernelConfig(shippedConfigFile("modules/rgmappingkernel.yaml"))};
+}
 
 MappingPipeline::MappingPipeline(const MappingPipelineConfig& config, std::optional<HmmClassifier> classifier)
     : slam_(config.slam), detector_(config.gateways, std::move(classifier)), kernel_(config.kernel) {}
