@@ -20,6 +20,12 @@ struct BreakpointParams {
   double rangeSigmaM = 0.01;               // range noise of the sensor
 };
 
+template <class V>
+void describe(V& v, BreakpointParams& c) {
+  v.degrees("lambda_deg", c.lambdaRad);
+  v.field("range_sigma_m", c.rangeSigmaM);
+}
+
 // Half-open index ranges [first, second) of `points` between breakpoints, in order.
 // `angleIncrementRad` is the scan's beam spacing. Throws InvalidArgumentError for bad params.
 std::vector<std::pair<std::size_t, std::size_t>> splitAtBreakpoints(const std::vector<ScanPoint>& points,

@@ -20,6 +20,14 @@ struct LineExtractorParams {
   double minLengthM = 0.15;      // shorter: no segment
 };
 
+template <class V>
+void describe(V& v, LineExtractorParams& c) {
+  v.section("breakpoints", c.breakpoints);
+  v.field("split_distance_m", c.splitDistanceM);
+  v.field("min_points", c.minPoints);
+  v.field("min_length_m", c.minLengthM);
+}
+
 class LineExtractor {
  public:
   // Throws InvalidArgumentError for parameters that can never work.

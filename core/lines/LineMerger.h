@@ -26,6 +26,13 @@ struct LineMergerParams {                   // thesis 3.2, laser data
   double maxGapM = 0.150;                   // D_gap^max
 };
 
+template <class V>
+void describe(V& v, LineMergerParams& c) {
+  v.degrees("max_angle_deg", c.maxAngleRad);
+  v.field("max_line_distance_m", c.maxLineDistanceM);
+  v.field("max_gap_m", c.maxGapM);
+}
+
 // D_L of figure 3.3: mean distance of the four endpoints to the other segment's line.
 double lineDistance(const LineSegment& a, const LineSegment& b);
 

@@ -23,6 +23,15 @@ struct GroupingParams {
   bool restrictive = true;                    // case B (laser); false: case A (images)
 };
 
+template <class V>
+void describe(V& v, GroupingParams& c) {
+  v.degrees("min_angle_deg", c.minAngleRad);
+  v.degrees("max_angle_deg", c.maxAngleRad);
+  v.field("max_neighbour_distance_m", c.maxNeighbourDistanceM);
+  v.field("min_opposite_distance_m", c.minOppositeDistanceM);
+  v.field("restrictive", c.restrictive);
+}
+
 // Throws InvalidArgumentError unless 0 < alpha_min < alpha_max, DN_max > 0 and DO_min >= 0.
 void validate(const GroupingParams& params);
 

@@ -38,6 +38,13 @@ struct RectangleDetectorParams {
   double maxOverlapRatio = 0.5;  // intersection over union, in [0, 1)
 };
 
+template <class V>
+void describe(V& v, RectangleDetectorParams& c) {
+  v.section("grouping", c.grouping);
+  v.field("min_confidence", c.minConfidence);
+  v.field("max_overlap_ratio", c.maxOverlapRatio);
+}
+
 // The rectangle fitted to a quadrangle hypothesis of `lines`.
 Rectangle2D fitRectangle(const std::vector<LineSegment>& lines, const Quadrangle& quadrangle);
 

@@ -7,7 +7,7 @@
 #include <fstream>
 #include <sstream>
 
-#include "core/supervision/ConfigNode.h"
+#include "core/config/ConfigNode.h"
 
 namespace rgnav {
 

@@ -7,7 +7,7 @@
 #include <sstream>
 
 #include "core/common/Errors.h"
-#include "core/supervision/ConfigNode.h"
+#include "core/config/ConfigNode.h"
 #include "core/supervision/StartOrder.h"
 
 namespace rgnav {

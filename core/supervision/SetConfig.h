@@ -9,7 +9,7 @@
 #include <vector>
 
 #include "core/supervision/ModulePolicy.h"
-#include "core/supervision/VarExpansion.h"
+#include "core/config/VarExpansion.h"
 
 namespace rgnav {
 

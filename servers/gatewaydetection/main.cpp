@@ -5,14 +5,14 @@
 #include <iostream>
 
 #include "core/gateways/classify/HmmModelFile.h"
+#include "core/gateways/detection/GatewayDetectorConfigYaml.h"
 #include "servers/gatewaydetection/GatewayDetectionImpl.h"
 
 namespace po = boost::program_options;
 using namespace rgnav;
 
 int main(int argc, char** argv) {
-  std::string laserObject, objectName, models;
-  double hallwayWidth = 0.0;
+  std::string laserObject, objectName, models, configFile;
   std::uint32_t maxBatch = 0, fetch = 0;
   po::options_description options("GatewayDetection options");
   options.add_options()
@@ -20,13 +20,12 @@ int main(int argc, char** argv) {
       ("object", po::value(&objectName)->default_value("GatewayDetection"), "object name of the interface")
       ("models", po::value(&models)->default_value(""),
        "trained HMM file (config/gateways/gateway-hmms.txt); none: narrow passages only")
-      ("hallway-width", po::value(&hallwayWidth)->default_value(2.0), "expected hallway width d_hw in metres")
+      ("config", po::value(&configFile)->required(), "module parameters (config/modules/gatewaydetection.yaml)")
       ("fetch", po::value(&fetch)->default_value(100), "scans asked from the Laser module per call")
       ("max-batch", po::value(&maxBatch)->default_value(500), "most events one call returns");
   std::unique_ptr<GatewayDetectionService> service;
   const int code = runServer(argc, argv, options, [&](ServerRuntime& runtime) {
-    GatewayDetectorConfig config;
-    config.hallways.hypotheses.hallwayWidthM = hallwayWidth;
+    const GatewayDetectorConfig config = loadGatewayDetectorConfig(configFile);
     std::optional<HmmClassifier> classifier;
     if (!models.empty()) classifier = loadHmmModels(models);
     GatewayDetectionServiceOptions serviceOptions;

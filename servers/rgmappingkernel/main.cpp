@@ -4,13 +4,14 @@
 // and resumes from its checkpoint after a restart.
 #include <iostream>
 
+#include "core/rgmap/kernel/RgMappingKernelConfigYaml.h"
 #include "servers/rgmappingkernel/RgMappingKernelImpl.h"
 
 namespace po = boost::program_options;
 using namespace rgnav;
 
 int main(int argc, char** argv) {
-  std::string scanMapperObject, detectionObject, objectName, exportRoot;
+  std::string scanMapperObject, detectionObject, objectName, configFile, exportRoot;
   std::uint32_t maxBatch = 0, fetch = 0;
   po::options_description options("RGMappingKernel options");
   options.add_options()
@@ -18,18 +19,20 @@ int main(int argc, char** argv) {
       ("detection-object", po::value(&detectionObject)->default_value("GatewayDetection"),
        "GatewayDetection module to follow")
       ("object", po::value(&objectName)->default_value("RGMappingKernel"), "object name of the interface")
+      ("config", po::value(&configFile)->required(), "module parameters (config/modules/rgmappingkernel.yaml)")
       ("fetch", po::value(&fetch)->default_value(100), "records asked from each input per call")
       ("max-batch", po::value(&maxBatch)->default_value(500), "most events one call returns")
       ("export-root", po::value(&exportRoot)->default_value(""),
        "the only directory exportMap writes into (default: <run dir>/exports beside the state directories)");
   std::unique_ptr<RgMappingKernelService> service;
   const int code = runServer(argc, argv, options, [&](ServerRuntime& runtime) {
+    const RgMappingKernelConfig config = loadRgMappingKernelConfig(configFile);
     RgMappingKernelServiceOptions serviceOptions;
     serviceOptions.fetchBatch = fetch;
     if (!runtime.server().stateDir.empty()) serviceOptions.checkpointFile = runtime.server().stateDir + "/rgmap.state";
     ClientSettings settings = runtime.clientSettings();
     settings.retryBudget = std::chrono::milliseconds(2000);
-    service = std::make_unique<RgMappingKernelService>(RgMappingKernelConfig{}, settings, scanMapperObject,
+    service = std::make_unique<RgMappingKernelService>(config, settings, scanMapperObject,
                                                        detectionObject, serviceOptions, runtime.health());
     const ExportRoot root(exportRoot.empty() ? defaultExportRoot(runtime.server().stateDir) : exportRoot);
     runtime.activate(objectName, new RgMappingKernelImpl(runtime, *service, maxBatch, root));

@@ -127,7 +127,10 @@ int main(int argc, char** argv) {
         {"CrashAtStart", {TestCluster::program("rgnav-carmen-playback"), "--log", "/nonexistent/crash-at-start.log"},
          {"CrashLaser"}, {}, "max_restarts: 3"}};
     if (mapping)
-      modules.push_back({"ScanMapper", {TestCluster::program("rgnav-scanmapper")}, {"ScanMapper"}, {"LogPlayback"},
+      modules.push_back({"ScanMapper",
+                         {TestCluster::program("rgnav-scanmapper"), "--config", TestCluster::moduleConfig("scanmapper")},
+                         {"ScanMapper"},
+                         {"LogPlayback"},
                          "max_restarts: 1000"});
     TestCluster cluster(modules, "defaults: {backoff_initial_s: 0.05, backoff_max_s: 0.4}");
     cluster.start({"LogPlayback", options.target});

@@ -40,7 +40,8 @@ class GatewayDetectionIntegrationTest : public CppUnit::TestFixture {
     const std::string models = std::string(std::getenv("RGNAV_ROOT")) + "/config/gateways/gateway-hmms.txt";
     TestCluster cluster({{"LogPlayback", playbackCommand(intelLog()), {"Laser", "Base"}},
                          {"GatewayDetection",
-                          {TestCluster::program("rgnav-gatewaydetection"), "--models", models},
+                          {TestCluster::program("rgnav-gatewaydetection"), "--config",
+                           TestCluster::moduleConfig("gatewaydetection"), "--models", models},
                           {"GatewayDetection"},
                           {"LogPlayback"}}},
                         kFastBackoff);

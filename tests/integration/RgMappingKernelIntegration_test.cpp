@@ -44,21 +44,25 @@ std::string modelsFile() { return std::string(std::getenv("RGNAV_ROOT")) + "/con
 // `kernelFetch`: records the kernel asks from each input per call.
 std::vector<ClusterModule> mappingSet(const std::string& log, const std::string& kernelFetch = "100") {
   return {{"LogPlayback", playbackCommand(log), {"Laser", "Base"}},
-          {"ScanMapper", {TestCluster::program("rgnav-scanmapper")}, {"ScanMapper"}, {"LogPlayback"}},
+          {"ScanMapper", {TestCluster::program("rgnav-scanmapper"), "--config", TestCluster::moduleConfig("scanmapper")},
+           {"ScanMapper"},
+           {"LogPlayback"}},
           {"GatewayDetection",
-           {TestCluster::program("rgnav-gatewaydetection"), "--models", modelsFile()},
+           {TestCluster::program("rgnav-gatewaydetection"), "--config", TestCluster::moduleConfig("gatewaydetection"),
+            "--models", modelsFile()},
            {"GatewayDetection"},
            {"LogPlayback"}},
           {"RGMappingKernel",
-           {TestCluster::program("rgnav-rgmappingkernel"), "--fetch", kernelFetch},
+           {TestCluster::program("rgnav-rgmappingkernel"), "--config", TestCluster::moduleConfig("rgmappingkernel"),
+            "--fetch", kernelFetch},
            {"RGMappingKernel"},
            {"ScanMapper", "GatewayDetection"}}};
 }
 
-// The kernel state of the in-process chain on every scan of `log`, with the modules' default
-// configurations.
+// The kernel state of the in-process chain on every scan of `log`, with the modules' shipped
+// parameters (as the server set).
 RgMapState inProcessState(const std::string& log) {
-  MappingPipeline pipeline({}, loadHmmModels(modelsFile()));
+  MappingPipeline pipeline(shippedPipelineConfig(), loadHmmModels(modelsFile()));
   const std::unique_ptr<LogSource> source = openLog(log);
   while (const std::optional<LogRecord> record = source->next())
     if (const auto* scan = std::get_if<LaserScan>(&*record)) pipeline.addScan(*scan);

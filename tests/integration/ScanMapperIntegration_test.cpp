@@ -25,7 +25,10 @@ class ScanMapperIntegrationTest : public CppUnit::TestFixture {
                           playbackCommand(derived + "xiaofeng-intel_gfs.json.xz",
                                           {"--corrected", derived + "xiaofeng-intel_corrected_log.json.xz"}),
                           {"Laser", "Base"}},
-                         {"ScanMapper", {TestCluster::program("rgnav-scanmapper")}, {"ScanMapper"}, {"LogPlayback"}}},
+                         {"ScanMapper",
+                          {TestCluster::program("rgnav-scanmapper"), "--config", TestCluster::moduleConfig("scanmapper")},
+                          {"ScanMapper"},
+                          {"LogPlayback"}}},
                         kFastBackoff);
     cluster.start();
     ScanMapperClient mapper(cluster.clientSettings());

@@ -34,6 +34,16 @@ struct GatewayDetectorConfig {
   double crossingOffsetM = 0.5;  // crossing points lie this far off a passage's line
 };
 
+template <class V>
+void describe(V& v, GatewayDetectorConfig& c) {
+  v.section("passages", c.passages);
+  v.section("passage_tracking", c.passageTracking);
+  v.section("hallways", c.hallways);
+  v.section("sequences", c.sequences);
+  v.section("areas", c.areas);
+  v.field("crossing_offset_m", c.crossingOffsetM);
+}
+
 struct GatewayDetectorState {
   PassageTrackerState passages;
   HypothesisTrackerState sequences;

@@ -35,6 +35,12 @@ struct HallwayAreaConfig {
   std::size_t minObservations = 3;  // shorter sequences are not classified
 };
 
+template <class V>
+void describe(V& v, HallwayAreaConfig& c) {
+  v.field("merge_distance_m", c.mergeDistanceM);
+  v.field("min_observations", c.minObservations);
+}
+
 // Throws ConfigError for a non-positive distance or zero observations.
 void validate(const HallwayAreaConfig& config);
 

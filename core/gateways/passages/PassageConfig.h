@@ -41,6 +41,23 @@ struct NarrowPassageConfig {
   BreakpointParams surfaceBreaks{20.0 * M_PI / 180.0, 0.01};  // where surfaces end
 };
 
+template <class V>
+void describe(V& v, NarrowPassageConfig& c) {
+  v.field("robot_radius_m", c.robotRadiusM);
+  v.field("safety_distance_m", c.safetyDistanceM);
+  v.field("max_door_width_m", c.maxDoorWidthM);
+  v.field("max_distance_m", c.maxDistanceM);
+  v.degrees("min_aperture_deg", c.minApertureRad);
+  v.degrees("half_range_deg", c.halfRangeRad);
+  v.degrees("viewing_step_deg", c.viewingStepRad);
+  v.field("min_depth_behind_m", c.minDepthBehindM);
+  v.field("min_beams_behind", c.minBeamsBehind);
+  v.field("min_jamb_length_m", c.minJambLengthM);
+  v.field("min_wall_end_length_m", c.minWallEndLengthM);
+  v.field("wall_end_tolerance_m", c.wallEndToleranceM);
+  v.section("surface_breaks", c.surfaceBreaks);
+}
+
 // D_lr^min = 2 (robotRadiusM + safetyDistanceM).
 double minPassageWidthM(const NarrowPassageConfig& config);
 

@@ -47,6 +47,16 @@ struct PassageTrackerConfig {
   double twinWidthFactor = 1.15;                 // ... and at least this many times as wide
 };
 
+template <class V>
+void describe(V& v, PassageTrackerConfig& c) {
+  v.field("association_distance_m", c.associationDistanceM);
+  v.field("min_support_scans", c.minSupport);
+  v.field("forget_after_updates", c.forgetAfterUpdates);
+  v.field("shared_point_m", c.sharedPointM);
+  v.degrees("twin_max_angle_deg", c.twinMaxAngleRad);
+  v.field("twin_width_factor", c.twinWidthFactor);
+}
+
 // Throws ConfigError for a non-positive association distance, a zero count, a negative shared-point
 // distance, an angle outside [0, pi/2] or a width factor below 1.
 void validate(const PassageTrackerConfig& config);

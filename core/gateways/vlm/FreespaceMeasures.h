@@ -39,6 +39,14 @@ struct FreespaceParams {
   double sideSetbackM = 0.1;    // l_par behind the left or right line
 };
 
+template <class V>
+void describe(V& v, FreespaceParams& c) {
+  v.field("on_line_lower_m", c.onLineLowerM);
+  v.field("on_line_upper_m", c.onLineUpperM);
+  v.field("front_setback_m", c.frontSetbackM);
+  v.field("side_setback_m", c.sideSetbackM);
+}
+
 struct SectorFreespace {
   std::array<double, kSectorCount> onLine{};    // W_on line per sector, indexed by Sector
   std::array<double, kSectorCount> overLine{};  // W_over line per sector

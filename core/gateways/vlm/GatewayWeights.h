@@ -19,6 +19,12 @@ struct WeightParams {
   double fGw = 0.5;   // f_gw, gateway-specific measures
 };
 
+template <class V>
+void describe(V& v, WeightParams& c) {
+  v.field("f_vlm", c.fVlm);
+  v.field("f_gw", c.fGw);
+}
+
 // sum_i W_FSM^{S_i}(GW) for one class.
 double classFreespace(GatewayClass gatewayClass, const SectorFreespace& fsm);
 

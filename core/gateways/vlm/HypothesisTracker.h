@@ -46,6 +46,16 @@ struct TrackerParams {
   std::size_t maxCoastedScans = 8;       // coasted observations per sequence at most
 };
 
+template <class V>
+void describe(V& v, TrackerParams& c) {
+  v.field("start_distance_m", c.startDistanceM);
+  v.field("match_tolerance_m", c.matchToleranceM);
+  v.field("max_missed_scans", c.maxMissedScans);
+  v.field("entry_depth_m", c.entryDepthM);
+  v.field("min_detections_to_coast", c.minDetectionsToCoast);
+  v.field("max_coasted_scans", c.maxCoastedScans);
+}
+
 enum class SequenceEnd { Entered, Lost, Flushed };
 
 // The observations of one tracked hypothesis, in the order they were made (decreasing

@@ -23,6 +23,13 @@ struct VirtualLineParams {
   double minSupportM = 0.3;                 // total segment length of a kept virtual line
 };
 
+template <class V>
+void describe(V& v, VirtualLineParams& c) {
+  v.degrees("max_angle_deg", c.maxAngleRad);
+  v.field("max_offset_m", c.maxOffsetM);
+  v.field("min_support_m", c.minSupportM);
+}
+
 struct VirtualLine {
   PlanarLine line;
   double supportM = 0.0;  // total length of its segments

@@ -30,6 +30,16 @@ struct VlmHypothesisParams {
   double duplicateToleranceM = 0.25;                   // identical VLMs
 };
 
+template <class V>
+void describe(V& v, VlmHypothesisParams& c) {
+  v.field("hallway_width_m", c.hallwayWidthM);
+  v.degrees("max_parallel_angle_deg", c.maxParallelAngleRad);
+  v.degrees("max_right_angle_error_deg", c.maxRightAngleErrorRad);
+  v.field("width_tolerance", c.widthTolerance);
+  v.field("max_singularity_offset_m", c.maxSingularityOffsetM);
+  v.field("duplicate_tolerance_m", c.duplicateToleranceM);
+}
+
 enum class HiddenLineSource { DepthSingularity, HallwayWidth };
 
 // Lines in the sensor frame; left and right point forward (away from the robot), front and

@@ -28,6 +28,16 @@ struct VlmObserverParams {
   WeightParams weights;
 };
 
+template <class V>
+void describe(V& v, VlmObserverParams& c) {
+  v.section("line_extraction", c.lineExtraction);
+  v.section("virtual_lines", c.virtualLines);
+  v.field("min_singularity_jump_m", c.minSingularityJumpM);
+  v.section("hypotheses", c.hypotheses);
+  v.section("freespace", c.freespace);
+  v.section("weights", c.weights);
+}
+
 struct VlmObservation {
   VlmHypothesis hypothesis;
   double distanceM = 0.0;  // from the sensor to the gateway centre

@@ -25,6 +25,12 @@ struct AccuracyParams {
   double maxDistanceM = 0.5;  // clamp for points the map does not explain
 };
 
+template <class V>
+void describe(V& v, AccuracyParams& c) {
+  v.field("tolerance_m", c.toleranceM);
+  v.field("max_distance_m", c.maxDistanceM);
+}
+
 struct LineMapAccuracy {
   std::size_t pointCount = 0;
   double inlierShare = 0.0;

@@ -23,6 +23,14 @@ struct MainDirectionParams {
   double minSecondWeight = 0.25;             // second direction's length relative to the first
 };
 
+template <class V>
+void describe(V& v, MainDirectionParams& c) {
+  v.degrees("bin_width_deg", c.binWidthRad);
+  v.degrees("window_deg", c.windowRad);
+  v.degrees("min_separation_deg", c.minSeparationRad);
+  v.field("min_second_weight", c.minSecondWeight);
+}
+
 struct MainDirection {
   double angleRad = 0.0;  // in [0, pi)
   double lengthM = 0.0;   // total length of the lines within the window

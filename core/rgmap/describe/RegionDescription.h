@@ -38,6 +38,13 @@ struct DescriptionParams {
   RegionObjectParams objects;
 };
 
+template <class V>
+void describe(V& v, DescriptionParams& c) {
+  v.section("accuracy", c.accuracy);
+  v.section("directions", c.directions);
+  v.section("objects", c.objects);
+}
+
 struct RegionDescription {
   Eigen::AlignedBox2d boundingBox;                  // axis-aligned; isEmpty() without measurements
   std::optional<OrientedRectangle> minimumAreaBox;  // nullopt without measurements

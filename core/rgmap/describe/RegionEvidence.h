@@ -20,6 +20,12 @@ struct RegionEvidenceConfig {
   std::size_t samplePoints = 2048;  // measurements kept for the accuracy measure
 };
 
+template <class V>
+void describe(V& v, RegionEvidenceConfig& c) {
+  v.section("freespace", c.freespace);
+  v.field("sample_points", c.samplePoints);
+}
+
 class RegionEvidence {
  public:
   // Throws ConfigError for an invalid freespace config or samplePoints == 0.

@@ -38,6 +38,14 @@ struct FreespaceConfig {
   double freePerHit = 4.0;          // free passes needed per hit for a cell to count as free
 };
 
+template <class V>
+void describe(V& v, FreespaceConfig& c) {
+  v.field("cell_size_m", c.cellSizeM);
+  v.field("no_return_free_range_m", c.noReturnFreeRangeM);
+  v.field("max_extent_m", c.maxExtentM);
+  v.field("free_per_hit", c.freePerHit);
+}
+
 enum class FreespaceCell : std::uint8_t { Unknown = 0, Free = 1, Occupied = 2 };
 
 // The part of the lattice a grid holds: cells i in [col0, col0 + width), j in [row0, row0 + height).

@@ -38,6 +38,15 @@ struct RegionObjectParams {
   double minWidthM = 0.35, maxWidthM = 2.0;
 };
 
+template <class V>
+void describe(V& v, RegionObjectParams& c) {
+  v.section("rectangles", c.rectangles);
+  v.field("max_seen_free_share", c.maxSeenFreeShare);
+  v.field("max_aspect_ratio", c.maxAspectRatio);
+  v.field("min_width_m", c.minWidthM);
+  v.field("max_width_m", c.maxWidthM);
+}
+
 // Most confident first. Throws InvalidArgumentError for invalid parameters (and as
 // RectangleDetector does for its own).
 std::vector<Rectangle2D> detectRegionObjects(const std::vector<LineSegment>& lines, const FreespaceBitmap& freespace,

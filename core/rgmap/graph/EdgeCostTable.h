@@ -33,6 +33,15 @@ struct EdgeCostConfig {
   double doorExtraM = 0.0;         // door edges never cost less than their length plus this
 };
 
+template <class V>
+void describe(V& v, EdgeCostConfig& c) {
+  v.field("nominal_speed_mps", c.nominalSpeedMps);
+  v.field("traversal_memory", c.traversalMemory);
+  v.field("door_blocked_m", c.doorBlockedM);
+  v.field("door_open_m", c.doorOpenM);
+  v.field("door_extra_m", c.doorExtraM);
+}
+
 // Throws ConfigError naming the first value out of range (non-finite values, a non-positive
 // speed, a zero memory, doorBlockedM <= 0, doorOpenM > 0, doorExtraM < 0).
 void validate(const EdgeCostConfig& config);

@@ -40,6 +40,16 @@ struct DoorSeparationConfig {
   double seedOffsetM = 0.2;     // the ends of the way: this far beyond the slab
 };
 
+template <class V>
+void describe(V& v, DoorSeparationConfig& c) {
+  v.field("cell_size_m", c.cellSizeM);
+  v.field("radius_m", c.radiusM);
+  v.field("scan_margin_m", c.scanMarginM);
+  v.field("slab_half_depth_m", c.slabHalfDepthM);
+  v.field("overhang_m", c.overhangM);
+  v.field("seed_offset_m", c.seedOffsetM);
+}
+
 // Throws ConfigError for a non-positive or non-finite size.
 void validate(const DoorSeparationConfig& config);
 

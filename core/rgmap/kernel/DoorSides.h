@@ -23,6 +23,14 @@ struct DoorSideProbe {
   double rangeToleranceM = 0.15;
 };
 
+template <class V>
+void describe(V& v, DoorSideProbe& c) {
+  v.field("depth_m", c.depthM);
+  v.field("widen_m", c.widenM);
+  v.field("beside_line_m", c.besideLineM);
+  v.field("range_tolerance_m", c.rangeToleranceM);
+}
+
 // Throws ConfigError for a negative or non-finite distance.
 void validate(const DoorSideProbe& probe);
 

@@ -43,6 +43,13 @@ struct SideEvidenceConfig {
   double besideM = 0.5;  // a passage: no side farther than this beside its line's ends
 };
 
+template <class V>
+void describe(V& v, SideEvidenceConfig& c) {
+  v.field("margin_m", c.marginM);
+  v.field("range_m", c.rangeM);
+  v.field("beside_m", c.besideM);
+}
+
 // corrected(lastScan) ∘ odometry(lastScan)^-1, with record.lastPose as odometry(lastScan).
 Pose2D odometryToMap(const GatewayRecord& record, const Pose2D& lastScanCorrected);
 

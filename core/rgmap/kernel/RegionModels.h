@@ -36,11 +36,23 @@ struct DoorFrameCut {
   double widenM = 1.0;   // longer than the door at each end
 };
 
+template <class V>
+void describe(V& v, DoorFrameCut& c) {
+  v.field("depth_m", c.depthM);
+  v.field("widen_m", c.widenM);
+}
+
 // Which scans of a region stay out of its freespace evidence (pastOwnDoor).
 struct PastOwnDoor {
   double depthM = 1.0;   // up to this far beyond the line of one of its own doors ...
   double besideM = 0.5;  // ... and at most this far beside the door's ends
 };
+
+template <class V>
+void describe(V& v, PastOwnDoor& c) {
+  v.field("depth_m", c.depthM);
+  v.field("beside_m", c.besideM);
+}
 
 // Which scans of a region have their beams cut at the wall of one of its own doors (doorWallLines).
 struct DoorWallCut {
@@ -48,6 +60,13 @@ struct DoorWallCut {
   double besideM = 0.5;  // ... and at most this far beside the door's ends
   double wallM = 3.0;    // the wall: the door's line lengthened this much at each end
 };
+
+template <class V>
+void describe(V& v, DoorWallCut& c) {
+  v.field("front_m", c.frontM);
+  v.field("beside_m", c.besideM);
+  v.field("wall_m", c.wallM);
+}
 
 struct RegionModelConfig {
   LineExtractorParams extractor;
@@ -59,6 +78,18 @@ struct RegionModelConfig {
   DoorWallCut doorWalls;
   DoorSideProbe unattachedDoors;  // which doors no region is attached to cut (otherDoorLines)
 };
+
+template <class V>
+void describe(V& v, RegionModelConfig& c) {
+  v.section("extractor", c.extractor);
+  v.section("merger", c.merger);
+  v.section("evidence", c.evidence);
+  v.section("description", c.description);
+  v.section("door_frames", c.doorFrames);
+  v.section("past_own_doors", c.pastOwnDoors);
+  v.section("door_walls", c.doorWalls);
+  v.section("unattached_doors", c.unattachedDoors);
+}
 
 // The gateway lines of `region` in its own frame: every side of its gateways that lies in it,
 // by gateway ID and side.

@@ -95,6 +95,16 @@ struct RgMappingKernelConfig {
   EdgeCostConfig costs;
 };
 
+template <class V>
+void describe(V& v, RgMappingKernelConfig& c) {
+  v.section("sides", c.sides);
+  v.field("same_door_m", c.sameDoorM);
+  v.field("min_area_sequences", c.minAreaSequences);
+  v.section("separation", c.separation);
+  v.section("models", c.models);
+  v.section("costs", c.costs);
+}
+
 // A revised corrected pose of scan `scanId` (map frame).
 struct CorrectedPose {
   DataId scanId = 0;

@@ -10,7 +10,7 @@
 #include "core/common/Errors.h"
 #include "core/sim/OccupancyGrid.h"
 #include "core/sim/world/Image.h"
-#include "core/supervision/ConfigNode.h"
+#include "core/config/ConfigNode.h"
 
 namespace rgnav {
 

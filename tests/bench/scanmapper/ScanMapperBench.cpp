@@ -30,7 +30,10 @@ int main(int argc, char** argv) {
     std::vector<std::string> playback{TestCluster::program("rgnav-carmen-playback"), "--log", log, "--speed", "max"};
     if (!corrected.empty()) playback.insert(playback.end(), {"--corrected", corrected});
     TestCluster cluster({{"LogPlayback", playback, {"Laser", "Base"}},
-                         {"ScanMapper", {TestCluster::program("rgnav-scanmapper")}, {"ScanMapper"}, {"LogPlayback"}}});
+                         {"ScanMapper",
+                          {TestCluster::program("rgnav-scanmapper"), "--config", TestCluster::moduleConfig("scanmapper")},
+                          {"ScanMapper"},
+                          {"LogPlayback"}}});
     cluster.start();
     ClientSettings settings = cluster.clientSettings();
     settings.consumer = "bench";

@@ -32,7 +32,9 @@
 #include <iostream>
 #include <string>
 
+#include "core/config/ShippedConfig.h"
 #include "core/gateways/classify/HmmModelFile.h"
+#include "core/gateways/detection/GatewayDetectorConfigYaml.h"
 #include "tests/eval/crossings/CrossingData.h"
 #include "tests/eval/crossings/Evaluation.h"
 #include "tests/eval/crossings/HmmSelection.h"
@@ -72,7 +74,12 @@ int main(int argc, char** argv) {
   try {
     if (!parseCommandLine(argc, argv, desc)) return 0;
     const auto start = std::chrono::steady_clock::now();
-    const CrossingsSetup setup;
+    // The observer and tracker as the GatewayDetection module runs them (its shipped parameters).
+    const GatewayDetectorConfig detection =
+        loadGatewayDetectorConfig(shippedConfigFile("modules/gatewaydetection.yaml"));
+    CrossingsSetup setup;
+    setup.observer = detection.hallways;
+    setup.tracker = detection.sequences;
     const CrossingData data = generateCrossingData(seed, layouts, setup, threads);
     ClassSequences fit, validation;
     std::size_t test = 0;

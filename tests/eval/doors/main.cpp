@@ -16,6 +16,8 @@
 #include <filesystem>
 #include <iostream>
 
+#include "core/config/ShippedConfig.h"
+#include "core/gateways/detection/GatewayDetectorConfigYaml.h"
 #include "core/sim/LoadedWorld.h"
 #include "core/sim/world/FloorPlan.h"
 #include "tests/eval/doors/DebugImage.h"
@@ -175,6 +177,15 @@ void printHeader(const Options& options) {
 int main(int argc, char** argv) {
   std::vector<std::string> maps;
   Options options;
+  try {  // the detector and tracker as the GatewayDetection module runs them (its shipped parameters)
+    const GatewayDetectorConfig detection =
+        loadGatewayDetectorConfig(shippedConfigFile("modules/gatewaydetection.yaml"));
+    options.setup.detector = detection.passages;
+    options.setup.tracker = detection.passageTracking;
+  } catch (const std::exception& e) {
+    std::cerr << "rgnav-eval-doors: " << e.what() << std::endl;
+    return 2;
+  }
   po::options_description desc("rgnav-eval-doors <X_furnitures.png>... [options]");
   desc.add_options()
       ("help", "this text")

@@ -2,6 +2,10 @@
 #include "tests/eval/rooms/MappingPipeline.h"
 
 #include "core/common/Errors.h"
+#include "core/config/ShippedConfig.h"
+#include "core/gateways/detection/GatewayDetectorConfigYaml.h"
+#include "core/rgmap/kernel/RgMappingKernelConfigYaml.h"
+#include "core/slam/SlamConfigYaml.h"
 
 namespace rgnav {
 namespace {
@@ -9,6 +13,12 @@ namespace {
 constexpr std::uint32_t kFetchBatch = 100;  // as the kernel module's default
 
 }  // namespace
+
+MappingPipelineConfig shippedPipelineConfig() {
+  return {loadSlamConfig(shippedConfigFile("modules/scanmapper.yaml")),
+          loadGatewayDetectorConfig(shippedConfigFile("modules/gatewaydetection.yaml")),
+          loadRgMappingKernelConfig(shippedConfigFile("modules/rgmappingkernel.yaml"))};
+}
 
 MappingPipeline::MappingPipeline(const MappingPipelineConfig& config, std::optional<HmmClassifier> classifier)
     : slam_(config.slam), detection_(config.gateways, std::move(classifier)), kernel_(config.kernel) {}

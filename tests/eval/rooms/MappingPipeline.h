@@ -33,6 +33,9 @@ struct MappingPipelineConfig {
   RgMappingKernelConfig kernel;
 };
 
+// The parameters the server set runs the three modules with (config/modules, ShippedConfig.h).
+MappingPipelineConfig shippedPipelineConfig();
+
 struct MappingCounts {
   std::size_t scans = 0;
   std::size_t keyframes = 0;

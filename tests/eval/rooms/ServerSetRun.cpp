@@ -28,12 +28,17 @@ std::vector<ClusterModule> mappingSet(const std::string& floorPlanPath, const Se
   std::vector<std::string> simulator{TestCluster::program("rgnav-sim"), "--world", absolute(floorPlanPath), "--clock",
                                      "lockstep", "--tour", "--seed", std::to_string(setup.seed)};
   if (!setup.simConfig.empty()) simulator.insert(simulator.end(), {"--config", absolute(setup.simConfig)});
-  std::vector<std::string> detection{TestCluster::program("rgnav-gatewaydetection")};
+  std::vector<std::string> detection{TestCluster::program("rgnav-gatewaydetection"), "--config",
+                                     TestCluster::moduleConfig("gatewaydetection")};
   if (!setup.models.empty()) detection.insert(detection.end(), {"--models", absolute(setup.models)});
   return {{"Simulator", simulator, {"Laser", "Base", "GroundTruth"}},
-          {"ScanMapper", {TestCluster::program("rgnav-scanmapper")}, {"ScanMapper"}, {"Simulator"}},
+          {"ScanMapper", {TestCluster::program("rgnav-scanmapper"), "--config", TestCluster::moduleConfig("scanmapper")},
+           {"ScanMapper"},
+           {"Simulator"}},
           {"GatewayDetection", detection, {"GatewayDetection"}, {"Simulator"}},
-          {"RGMappingKernel", {TestCluster::program("rgnav-rgmappingkernel")}, {"RGMappingKernel"},
+          {"RGMappingKernel",
+           {TestCluster::program("rgnav-rgmappingkernel"), "--config", TestCluster::moduleConfig("rgmappingkernel")},
+           {"RGMappingKernel"},
            {"ScanMapper", "GatewayDetection"}}};
 }
 

@@ -56,10 +56,11 @@ struct Options {
   double maxHoleM2 = 2.0;
 };
 
-// Whether an option that only the in-process run takes differs from its default.
-bool inProcessOptionsGiven(const Options& o) {
+// Whether an option that only the in-process run takes differs from its default (`shipped`: the
+// modules' parameters the server set runs with).
+bool inProcessOptionsGiven(const Options& o, const MappingPipelineConfig& shipped) {
   const Options d;
-  const MappingPipelineConfig &p = o.setup.pipeline, &q = d.setup.pipeline;
+  const MappingPipelineConfig &p = o.setup.pipeline, &q = shipped;
   return o.list || o.regionPictures || o.setup.truePoses || o.setup.maxTourSeconds != d.setup.maxTourSeconds ||
          p.gateways.hallways.hypotheses.hallwayWidthM != q.gateways.hallways.hypotheses.hallwayWidthM ||
          p.gateways.passages.maxDoorWidthM != q.gateways.passages.maxDoorWidthM ||
@@ -181,6 +182,13 @@ void printHeader(bool hallways, bool truePoses, bool serverSet, double growM, do
 int main(int argc, char** argv) {
   std::vector<std::string> maps;
   Options options;
+  try {
+    options.setup.pipeline = shippedPipelineConfig();
+  } catch (const std::exception& e) {
+    std::cerr << "rgnav-eval-rooms: " << e.what() << std::endl;
+    return 2;
+  }
+  const MappingPipelineConfig shipped = options.setup.pipeline;
   NarrowPassageConfig& passages = options.setup.pipeline.gateways.passages;
   po::options_description desc("rgnav-eval-rooms <X_furnitures.png>... [options]");
   desc.add_options()
@@ -239,8 +247,8 @@ int main(int argc, char** argv) {
     std::optional<HmmClassifier> classifier;
     if (std::filesystem::exists(options.models)) classifier = loadHmmModels(options.models);
     std::filesystem::create_directories(options.outDir);
-    if (options.serverSet && inProcessOptionsGiven(options))
-      throw ConfigError("--server-set runs every module with its defaults: the detector and kernel options, "
+    if (options.serverSet && inProcessOptionsGiven(options, shipped))
+      throw ConfigError("--server-set runs every module with its shipped parameters: the detector and kernel options, "
                         "--true-poses, --max-tour-s, --list and --region-pictures need the in-process run");
     if (options.serverSet) testing::catchInterruptions();  // so that a stopped run removes its server set's directory
     printHeader(classifier.has_value(), options.setup.truePoses, options.serverSet, options.growM, options.maxHoleM2);

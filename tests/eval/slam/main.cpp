@@ -17,8 +17,10 @@
 #include <vector>
 
 #include "core/common/Errors.h"
+#include "core/config/ShippedConfig.h"
 #include "core/logs/OpenLog.h"
 #include "core/slam/ScanMapper.h"
+#include "core/slam/SlamConfigYaml.h"
 #include "core/slam/eval/OdometryNoise.h"
 #include "core/slam/eval/Relations.h"
 #include "core/slam/eval/RelativePoseMetric.h"
@@ -30,6 +32,7 @@ namespace {
 
 struct Options {
   std::string log;
+  std::string config = rgnav::shippedConfigFile("modules/scanmapper.yaml");
   std::string relations;
   std::string corrected;
   std::string posesOut;
@@ -147,6 +150,7 @@ int main(int argc, char** argv) {
   desc.add_options()
       ("help", "this text")
       ("log", po::value(&options.log)->required(), "CARMEN or Intel JSON log")
+      ("config", po::value(&options.config)->default_value(options.config), "ScanMapper parameters")
       ("relations", po::value(&options.relations), "SLAM benchmark relations file")
       ("odometry-noise", po::value<std::uint64_t>()->notifier([&](std::uint64_t s) { options.noiseSeed = s; }),
        "replace the odometry by the log's poses plus noise drawn with this seed")
@@ -163,7 +167,7 @@ int main(int argc, char** argv) {
     if (!rgnav::parseCommandLine(argc, argv, desc, positional)) return 0;
     std::vector<rgnav::LaserScan> scans = readScans(options);
     if (options.noiseSeed) addOdometryNoise(scans, *options.noiseSeed);
-    rgnav::ScanMapper mapper;
+    rgnav::ScanMapper mapper(rgnav::loadSlamConfig(options.config));
     const Timing timing = run(mapper, scans);
     if (!options.posesOut.empty()) writePoses(options.posesOut, mapper, scans);
     report(options, mapper, scans, timing);

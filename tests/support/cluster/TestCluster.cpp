@@ -15,6 +15,7 @@
 #include <stdexcept>
 #include <thread>
 
+#include "core/config/ShippedConfig.h"
 #include "tests/support/cluster/Interruption.h"
 #include "watchdog/ProcStat.h"
 #include "watchdog/Spawn.h"
@@ -46,6 +47,10 @@ int freeLoopbackPort() {
 std::string TestCluster::program(const std::string& name) {
   const char* bin = std::getenv("RGNAV_BIN");
   return (bin && *bin ? fs::path(bin) : fs::canonical("/proc/self/exe").parent_path()) / name;
+}
+
+std::string TestCluster::moduleConfig(const std::string& module) {
+  return shippedConfigFile("modules/" + module + ".yaml");
 }
 
 std::string TestCluster::shared(const std::string& relative) {

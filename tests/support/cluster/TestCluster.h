@@ -67,6 +67,8 @@ class TestCluster {
   // Absolute path of a program built by the project / of a file in the shared data folder.
   static std::string program(const std::string& name);
   static std::string shared(const std::string& relative);
+  // Absolute path of a module's shipped parameters, config/modules/<module>.yaml (its --config).
+  static std::string moduleConfig(const std::string& module);
 
  private:
   void remember(pid_t pid);

@@ -1,5 +1,5 @@
 // Typed, strict reading of YAML nodes with key paths in every error.
-#include "core/supervision/ConfigNode.h"
+#include "core/config/ConfigNode.h"
 
 #include <algorithm>
 #include <cmath>

@@ -2,7 +2,7 @@
 #include <cppunit/extensions/HelperMacros.h>
 
 #include "core/common/Errors.h"
-#include "core/supervision/VarExpansion.h"
+#include "core/config/VarExpansion.h"
 
 using rgnav::ConfigError;
 using rgnav::expandVariables;

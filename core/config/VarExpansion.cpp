@@ -1,5 +1,5 @@
 // ${NAME} expansion for config strings.
-#include "core/supervision/VarExpansion.h"
+#include "core/config/VarExpansion.h"
 
 #include "core/common/Errors.h"
 

@@ -1,5 +1,5 @@
 // Strict, path-aware access to a parsed YAML config tree. Every error is a ConfigError that
-// names the key path ("modules[2].port") and the line. Internal to rgnav_supervision.
+// names the key path ("modules[2].port") and the line. Shared by every YAML loader (rgnav_config).
 #pragma once
 
 #include <yaml-cpp/yaml.h>
@@ -8,7 +8,7 @@
 #include <string>
 #include <vector>
 
-#include "core/supervision/VarExpansion.h"
+#include "core/config/VarExpansion.h"
 
 namespace rgnav {
 
