@@ -9,7 +9,7 @@
 #include <cmath>
 
 #include "core/common/Pose2D.h"
-#include "core/sim/OccupancyGrid.h"
+#include "core/raster/OccupancyGrid.h"
 
 namespace rgnav {
 

@@ -11,7 +11,7 @@
 #include <vector>
 
 #include "core/common/Pose2D.h"
-#include "core/sim/OccupancyGrid.h"
+#include "core/raster/OccupancyGrid.h"
 #include "core/sim/motion/DiffDriveRobot.h"
 
 namespace rgnav {

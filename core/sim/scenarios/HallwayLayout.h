@@ -8,7 +8,7 @@
 
 #include <vector>
 
-#include "core/sim/OccupancyGrid.h"
+#include "core/raster/OccupancyGrid.h"
 #include "core/sim/scenarios/GatewayClass.h"
 #include "core/sim/scenarios/GridDrawing.h"
 

@@ -18,7 +18,7 @@
 #include <string>
 #include <vector>
 
-#include "core/sim/OccupancyGrid.h"
+#include "core/raster/OccupancyGrid.h"
 #include "core/sim/scenarios/ApproachTrajectory.h"
 #include "core/sim/scenarios/Clutter.h"
 #include "core/sim/scenarios/GatewayClass.h"

@@ -10,7 +10,7 @@
 #include <vector>
 
 #include "core/common/Pose2D.h"
-#include "core/sim/OccupancyGrid.h"
+#include "core/raster/OccupancyGrid.h"
 
 namespace rgnav {
 
