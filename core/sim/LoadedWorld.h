@@ -9,8 +9,8 @@
 #include <optional>
 #include <string>
 
+#include "core/raster/OccupancyGrid.h"
 #include "core/sim/GroundTruth.h"
-#include "core/sim/OccupancyGrid.h"
 
 namespace rgnav {
 

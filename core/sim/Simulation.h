@@ -11,7 +11,7 @@
 #include <vector>
 
 #include "core/common/SensorData.h"
-#include "core/sim/OccupancyGrid.h"
+#include "core/raster/OccupancyGrid.h"
 #include "core/sim/motion/DiffDriveRobot.h"
 #include "core/sim/motion/OdometryNoiseModel.h"
 #include "core/sim/world/LaserModel.h"

@@ -3,7 +3,7 @@
 #pragma once
 
 #include "core/common/Pose2D.h"
-#include "core/sim/OccupancyGrid.h"
+#include "core/raster/OccupancyGrid.h"
 
 namespace rgnav {
 

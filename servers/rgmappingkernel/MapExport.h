@@ -9,7 +9,7 @@
 
 #include "core/rgmap/export/RgMapSnapshot.h"
 #include "core/rgmap/kernel/RgMappingKernel.h"
-#include "core/sim/OccupancyGrid.h"
+#include "core/raster/OccupancyGrid.h"
 
 namespace rgnav {
 

@@ -4,7 +4,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "core/sim/DistanceField.h"
+#include "core/raster/DistanceField.h"
 
 namespace rgnav {
 

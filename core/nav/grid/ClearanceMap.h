@@ -5,7 +5,7 @@
 
 #include <vector>
 
-#include "core/sim/OccupancyGrid.h"
+#include "core/raster/OccupancyGrid.h"
 
 namespace rgnav {
 

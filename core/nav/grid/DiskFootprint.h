@@ -3,7 +3,7 @@
 // test (closest point of each cell square to the disk centre); touching is not overlapping.
 #pragma once
 
-#include "core/sim/OccupancyGrid.h"
+#include "core/raster/OccupancyGrid.h"
 
 namespace rgnav {
 

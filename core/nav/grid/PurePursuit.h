@@ -13,7 +13,7 @@
 
 #include "core/common/Pose2D.h"
 #include "core/common/VelocityCommand.h"
-#include "core/sim/OccupancyGrid.h"
+#include "core/raster/OccupancyGrid.h"
 
 namespace rgnav {
 

@@ -4,6 +4,9 @@
 // Coordinates are in cell units: cell (i, j) covers [i, i + 1) x [j, j + 1). The walk is
 // 4-connected: where the segment passes exactly through a lattice corner it steps in y first, so
 // the cells of a line have no diagonal gaps.
+// Ours, not OpenCV's: cv::LineIterator walks pixel centres (Bresenham, 4- or 8-connected), so it
+// skips cells a beam clips at a corner and works on integer end points; this walk needs every cell
+// a real-valued segment touches.
 #pragma once
 
 #include <cmath>

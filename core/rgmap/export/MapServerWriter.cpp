@@ -3,8 +3,9 @@
 
 #include "core/common/AtomicFile.h"
 #include "core/common/Errors.h"
+#include "core/raster/ImageFile.h"
+#include "core/raster/ImageGrid.h"
 #include "core/rgmap/export/ExportNumbers.h"
-#include "core/sim/world/PgmIo.h"
 
 namespace rgnav {
 namespace {
@@ -25,12 +26,9 @@ std::uint8_t gray(Cell c) {
 MapServerFiles writeMapServerMap(const std::string& dir, const std::string& name, const OccupancyGrid& grid) {
   if (name.empty() || name.find('/') != std::string::npos)
     throw InvalidArgumentError("map_server map: the name must be non-empty and hold no '/'");
-  GrayImage image(grid.width(), grid.height());
-  for (int row = 0; row < grid.height(); ++row)
-    for (int col = 0; col < grid.width(); ++col) image.set(col, grid.height() - 1 - row, gray(grid.at({col, row})));
   const std::string prefix = (dir.empty() ? std::string(".") : dir) + "/" + name;
   const MapServerFiles files{prefix + ".yaml", prefix + ".pgm"};
-  writePgm(files.imagePath, image, PgmEncoding::Binary);
+  writeImage(files.imagePath, imageFromGrid(grid, gray));
   writeFileAtomically(files.yamlPath, "image: " + name + ".pgm\nresolution: " +
                                           decimalText(grid.resolution(), kYamlDecimals) + "\norigin: [" +
                                           decimalText(grid.origin().x, kYamlDecimals) + ", " +

@@ -1,5 +1,5 @@
 // writeMapServerMap: an occupancy grid as a ROS map_server map, the format ROS tools and our own
-// loader (MapServerYaml.h) read: <name>.pgm (binary P5, PgmIo.h; free 254, occupied 0, unknown 205,
+// loader (MapServerYaml.h) read: <name>.pgm (binary P5, core/raster/ImageFile.h; free 254, occupied 0, unknown 205,
 // as map_server's map_saver writes them; image row 0 is the grid's top row) and <name>.yaml:
 //   image: <name>.pgm
 //   resolution: <m per pixel>
@@ -13,7 +13,7 @@
 #include <cstdint>
 #include <string>
 
-#include "core/sim/OccupancyGrid.h"
+#include "core/raster/OccupancyGrid.h"
 
 namespace rgnav {
 

@@ -15,9 +15,9 @@
 
 #include <string>
 
+#include "core/raster/OccupancyGrid.h"
 #include "core/rgmap/export/MapServerWriter.h"
 #include "core/rgmap/kernel/RgMapState.h"
-#include "core/sim/OccupancyGrid.h"
 
 namespace rgnav {
 

@@ -8,12 +8,12 @@
 
 #include <algorithm>
 
+#include "core/common/AtomicFile.h"
 #include "core/common/Errors.h"
 #include "core/logs/LogTestFiles.h"
+#include "core/raster/ImageFile.h"
 #include "core/rgmap/export/testing/ExportedFloor.h"
 #include "core/rgmap/kernel/testing/SyntheticTour.h"
-#include "core/sim/world/FileBytes.h"
-#include "core/sim/world/ImageFile.h"
 #include "core/sim/world/MapServerYaml.h"
 
 using namespace rgnav;
@@ -67,7 +67,7 @@ class OccupancyMapTest : public CppUnit::TestFixture {
     CPPUNIT_ASSERT_DOUBLES_EQUAL(grid_.origin().x, loaded.origin().x, 1e-9);
     CPPUNIT_ASSERT_DOUBLES_EQUAL(grid_.origin().y, loaded.origin().y, 1e-9);
     CPPUNIT_ASSERT(grid_.cells() == loaded.cells());
-    const std::string yaml = readFileBytes(files.yamlPath);
+    const std::string yaml = readCheckpoint(files.yamlPath).value();
     for (const char* key : {"image: floor.pgm\n", "resolution: 0.05\n", "origin: [", "negate: 0\n",
                             "occupied_thresh: 0.65\n", "free_thresh: 0.196\n"})
       CPPUNIT_ASSERT_MESSAGE(key, yaml.find(key) != std::string::npos);
@@ -106,17 +106,17 @@ class OccupancyMapTest : public CppUnit::TestFixture {
   void grayValuesAreMapServers() {
     rgnav::testing::TempDir dir;
     const MapServerFiles files = exportOccupancyMap(dir.path(), "floor", kernel_->state());
-    const GrayImage image = readGrayImage(files.imagePath);
+    const cv::Mat image = readGrayImage(files.imagePath);
     std::size_t counts[256] = {};
-    for (const std::uint8_t v : image.pixels()) ++counts[v];
+    for (auto v = image.datastart; v != image.dataend; ++v) ++counts[*v];
     const std::size_t known = counts[kMapFreeGray] + counts[kMapOccupiedGray] + counts[kMapUnknownGray];
-    CPPUNIT_ASSERT_EQUAL(image.pixels().size(), known);
+    CPPUNIT_ASSERT_EQUAL(image.total(), known);
     CPPUNIT_ASSERT(counts[kMapFreeGray] > 0 && counts[kMapOccupiedGray] > 0 && counts[kMapUnknownGray] > 0);
     // Image row 0 is the grid's top row.
     CPPUNIT_ASSERT_EQUAL(grid_.at({0, grid_.height() - 1}) == Cell::Unknown ? kMapUnknownGray
                          : grid_.at({0, grid_.height() - 1}) == Cell::Free ? kMapFreeGray
                                                                            : kMapOccupiedGray,
-                         image.at(0, 0));
+                         image.at<std::uint8_t>(0, 0));
   }
 
   void badRequestsAreRefused() {

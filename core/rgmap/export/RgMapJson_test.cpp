@@ -9,11 +9,11 @@
 #include <nlohmann/json.hpp>
 #include <regex>
 
+#include "core/common/AtomicFile.h"
 #include "core/common/Errors.h"
 #include "core/logs/LogTestFiles.h"
 #include "core/rgmap/export/Base64.h"
 #include "core/rgmap/export/testing/ExportedFloor.h"
-#include "core/sim/world/FileBytes.h"
 
 using namespace rgnav;
 using nlohmann::json;
@@ -163,7 +163,7 @@ class RgMapJsonTest : public CppUnit::TestFixture {
   void fileIsWritten() {
     rgnav::testing::TempDir dir;
     writeRgMapJson(dir.file("map.json"), snapshot_);
-    CPPUNIT_ASSERT(text_ == readFileBytes(dir.file("map.json")));
+    CPPUNIT_ASSERT(text_ == readCheckpoint(dir.file("map.json")).value());
     CPPUNIT_ASSERT_THROW(writeRgMapJson(dir.file("missing/map.json"), snapshot_), FileError);
   }
 

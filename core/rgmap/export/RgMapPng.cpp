@@ -1,12 +1,13 @@
 // The RG Map as a PNG picture; see RgMapPng.h.
 #include "core/rgmap/export/RgMapPng.h"
 
+#include <opencv2/core.hpp>
 
+#include "core/raster/ImageFile.h"
 #include "core/rgmap/describe/FreespaceRaster.h"
 #include "core/rgmap/export/MapCanvas.h"
 #include "core/rgmap/export/MapColours.h"
 #include "core/rgmap/export/MapExtent.h"
-#include "core/sim/world/PngIo.h"
 
 namespace rgnav {
 namespace {
@@ -18,14 +19,13 @@ constexpr int kDigitScale = 2;
 constexpr int kLabelLiftPixels = 3;
 
 void paintFreespace(MapCanvas& canvas, const RegionSnapshot& r) {
-  const RgbImage& image = canvas.image();
-  const RasterFrame frame{canvas.resolutionM(), canvas.originM(), image.width(), image.height()};
-  const std::vector<std::uint8_t> raster = rasteriseFreespace(r.description.freespace, r.region.frame, frame);
-  const Rgb colour = regionColour(r.region.id);
-  for (int row = 0; row < frame.height; ++row)
-    for (int col = 0; col < frame.width; ++col)
-      if (raster[std::size_t(row) * std::size_t(frame.width) + std::size_t(col)])
-        canvas.setPixel(col, frame.height - 1 - row, colour);
+  const cv::Mat& image = canvas.image();
+  const RasterFrame frame{canvas.resolutionM(), canvas.originM(), image.cols, image.rows};
+  std::vector<std::uint8_t> raster = rasteriseFreespace(r.description.freespace, r.region.frame, frame);
+  // The raster's row 0 is the bottom, the canvas's the top.
+  cv::Mat mask;
+  cv::flip(cv::Mat(frame.height, frame.width, CV_8UC1, raster.data()), mask, 0);
+  canvas.fill(mask, regionColour(r.region.id));
 }
 
 void paintGateway(MapCanvas& canvas, const GatewaySnapshot& s) {
@@ -43,7 +43,7 @@ void paintGateway(MapCanvas& canvas, const GatewaySnapshot& s) {
 
 }  // namespace
 
-RgbImage renderRgMap(const RgMapSnapshot& map, double resolutionM) {
+cv::Mat renderRgMap(const RgMapSnapshot& map, double resolutionM) {
   MapCanvas canvas(pictureExtent(map), resolutionM, kBackgroundColour);
   for (const RegionSnapshot& r : map.regions) paintFreespace(canvas, r);
   for (const RgEdge& e : map.graphEdges)
@@ -57,7 +57,7 @@ RgbImage renderRgMap(const RgMapSnapshot& map, double resolutionM) {
 }
 
 void exportRgMapPng(const std::string& path, const RgMapSnapshot& map, double resolutionM) {
-  writePng(path, renderRgMap(map, resolutionM));
+  writeImage(path, renderRgMap(map, resolutionM));
 }
 
 }  // namespace rgnav

@@ -1,5 +1,5 @@
-// renderRgMap / exportRgMapPng: the picture of RgMapSvg.h as a raster image (PNG, written with
-// PngIo.h), for viewers without SVG and for quick looks at large maps: over pictureExtent
+// renderRgMap / exportRgMapPng: the picture of RgMapSvg.h as a raster image (PNG, drawn on a
+// MapCanvas and written with core/raster/ImageFile.h), for viewers without SVG and for quick looks at large maps: over pictureExtent
 // (MapExtent.h) at resolutionM metres per pixel, y up, each region's freespace in its colour
 // (MapColours.h; a pixel is the region's if its centre lies in a free cell, FreespaceRaster.h,
 // and later regions paint over earlier ones where freespaces overlap), the RG Graph's edges in
@@ -10,16 +10,16 @@
 // resolution is the scale.
 #pragma once
 
+#include <opencv2/core.hpp>
 #include <string>
 
 #include "core/rgmap/export/RgMapSnapshot.h"
-#include "core/sim/world/Image.h"
 
 namespace rgnav {
 
 // Throws InvalidArgumentError for a non-positive resolution or a picture wider or taller than
-// MapCanvas::kMaxSidePixels.
-RgbImage renderRgMap(const RgMapSnapshot& map, double resolutionM = 0.05);
+// MapCanvas::kMaxSidePixels. CV_8UC3, BGR.
+cv::Mat renderRgMap(const RgMapSnapshot& map, double resolutionM = 0.05);
 
 // Writes renderRgMap(map, resolutionM) atomically; throws FileError naming the path.
 void exportRgMapPng(const std::string& path, const RgMapSnapshot& map, double resolutionM = 0.05);

@@ -1,4 +1,4 @@
-// Tests the RG Map's PNG export on the map of the two-room tour: the file reads back (PngIo) at
+// Tests the RG Map's PNG export on the map of the two-room tour: the file reads back (core/raster) at
 // the size of the picture's extent, each region's colour at its freespace centroid, doors drawn
 // on the true door lines, a ring corridor labelled in its freespace, bad resolutions refused.
 #include "core/rgmap/export/RgMapPng.h"
@@ -10,21 +10,22 @@
 #include "core/common/Errors.h"
 #include "core/lines/ScanPoints.h"
 #include "core/logs/LogTestFiles.h"
+#include "core/raster/ImageFile.h"
 #include "core/rgmap/export/MapCanvas.h"
 #include "core/rgmap/export/MapColours.h"
 #include "core/rgmap/export/MapExtent.h"
 #include "core/rgmap/export/testing/ExportedFloor.h"
-#include "core/sim/world/ImageFile.h"
 
 using namespace rgnav;
 
 namespace {
 
-Rgb pixel(const RgbImage& image, const Eigen::Vector2i& p) {
-  return {image.at(p.x(), p.y(), 0), image.at(p.x(), p.y(), 1), image.at(p.x(), p.y(), 2)};
+Rgb pixel(const cv::Mat& bgr, const Eigen::Vector2i& p) {
+  const cv::Vec3b v = bgr.at<cv::Vec3b>(p.y(), p.x());
+  return {v[2], v[1], v[0]};
 }
 
-// Gray as PngIo reads colour files (ITU-R 601 luma).
+// Gray as readGrayImage reads colour files (ITU-R 601 luma).
 int luma(const Rgb& c) { return int(std::lround(0.299 * c.r + 0.587 * c.g + 0.114 * c.b)); }
 
 }  // namespace
@@ -48,16 +49,16 @@ class RgMapPngTest : public CppUnit::TestFixture {
   void fileReadsBackAtTheExtentsSize() {
     rgnav::testing::TempDir dir;
     exportRgMapPng(dir.file("map.png"), snapshot_, 0.05);
-    const GrayImage read = readGrayImage(dir.file("map.png"));
+    const cv::Mat read = readGrayImage(dir.file("map.png"));
     const Eigen::Vector2d size = pictureExtent(snapshot_).sizes();
-    CPPUNIT_ASSERT_EQUAL(int(std::ceil(size.x() / 0.05)), read.width());
-    CPPUNIT_ASSERT_EQUAL(int(std::ceil(size.y() / 0.05)), read.height());
-    CPPUNIT_ASSERT_EQUAL(image_.width(), read.width());
+    CPPUNIT_ASSERT_EQUAL(int(std::ceil(size.x() / 0.05)), read.cols);
+    CPPUNIT_ASSERT_EQUAL(int(std::ceil(size.y() / 0.05)), read.rows);
+    CPPUNIT_ASSERT_EQUAL(image_.cols, read.cols);
     // The floor is 12 x 6 m; the picture adds half a metre on every side.
-    CPPUNIT_ASSERT_DOUBLES_EQUAL(13.0 / 0.05, read.width(), 8);
+    CPPUNIT_ASSERT_DOUBLES_EQUAL(13.0 / 0.05, read.cols, 8);
     for (const RegionSnapshot& r : snapshot_.regions) {
       const Eigen::Vector2i at = canvas_->pixelOf(r.labelPosition());
-      CPPUNIT_ASSERT(std::abs(luma(regionColour(r.region.id)) - int(read.at(at.x(), at.y()))) <= 1);
+      CPPUNIT_ASSERT(std::abs(luma(regionColour(r.region.id)) - int(read.at<std::uint8_t>(at.y(), at.x()))) <= 1);
     }
   }
 
@@ -97,7 +98,7 @@ class RgMapPngTest : public CppUnit::TestFixture {
 
  private:
   RgMapSnapshot snapshot_;
-  RgbImage image_;
+  cv::Mat image_;
   std::unique_ptr<MapCanvas> canvas_;
 };
 

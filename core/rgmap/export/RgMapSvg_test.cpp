@@ -5,10 +5,10 @@
 
 #include <cppunit/extensions/HelperMacros.h>
 
+#include "core/common/AtomicFile.h"
 #include "core/logs/LogTestFiles.h"
 #include "core/rgmap/export/MapColours.h"
 #include "core/rgmap/export/testing/ExportedFloor.h"
-#include "core/sim/world/FileBytes.h"
 
 using namespace rgnav;
 
@@ -78,7 +78,7 @@ class RgMapSvgTest : public CppUnit::TestFixture {
     CPPUNIT_ASSERT(svg_ == exportRgMapSvg(snapshotOf(rgnav::testing::twoRoomMap())));
     rgnav::testing::TempDir dir;
     writeRgMapSvg(dir.file("map.svg"), snapshotOf(*kernel_));
-    CPPUNIT_ASSERT(svg_ == readFileBytes(dir.file("map.svg")));
+    CPPUNIT_ASSERT(svg_ == readCheckpoint(dir.file("map.svg")).value());
   }
 
  private:

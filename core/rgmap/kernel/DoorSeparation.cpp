@@ -4,8 +4,9 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
-#include <deque>
 #include <limits>
+#include <opencv2/core.hpp>
+#include <opencv2/imgproc.hpp>
 #include <string>
 #include <utility>
 #include <vector>
@@ -92,11 +93,11 @@ class LocalWay {
   LocalWay(RegionFreespace grid, const Eigen::Vector2d& mid, double radiusM)
       : grid_(std::move(grid)), centre_(grid_.cellOf(mid)),
         half_(static_cast<int>(std::ceil(radiusM / grid_.cellSizeM()))),
-        open_(std::size_t(2 * half_ + 1) * std::size_t(2 * half_ + 1), false) {
+        open_(2 * half_ + 1, 2 * half_ + 1, CV_8UC1, cv::Scalar(kClosed)) {
     for (int j = -half_; j <= half_; ++j)
       for (int i = -half_; i <= half_; ++i) {
         const int ci = centre_.i + i, cj = centre_.j + j;
-        open_[index(i, j)] = (grid_.cellCenter(ci, cj) - mid).norm() <= radiusM && passable(ci, cj);
+        if ((grid_.cellCenter(ci, cj) - mid).norm() <= radiusM && passable(ci, cj)) at(i, j) = kOpen;
       }
   }
 
@@ -105,36 +106,31 @@ class LocalWay {
   void block(const Shape& shape) {
     for (int j = -half_; j <= half_; ++j)
       for (int i = -half_; i <= half_; ++i)
-        if (shape.contains(grid_.cellCenter(centre_.i + i, centre_.j + j))) open_[index(i, j)] = false;
+        if (shape.contains(grid_.cellCenter(centre_.i + i, centre_.j + j))) at(i, j) = kClosed;
   }
 
-  // Whether a 4-connected path of open cells joins the cells that contain `from` and `to`.
+  // Whether a 4-connected path of open cells joins the cells that contain `from` and `to`: a
+  // flood fill (cv::floodFill) from one reaches the other.
   bool joins(const Eigen::Vector2d& from, const Eigen::Vector2d& to) const {
     const auto local = [&](const Eigen::Vector2d& p) {
       const LatticeCell c = grid_.cellOf(p);
-      return std::pair{c.i - centre_.i, c.j - centre_.j};
+      return cv::Point(c.i - centre_.i + half_, c.j - centre_.j + half_);
     };
-    const auto start = local(from), goal = local(to);
-    if (!open(start.first, start.second) || !open(goal.first, goal.second)) return false;
-    std::vector<bool> seen(open_.size(), false);
-    std::deque<std::pair<int, int>> queue{start};
-    seen[index(start.first, start.second)] = true;
-    while (!queue.empty()) {
-      const auto [i, j] = queue.front();
-      queue.pop_front();
-      if (std::pair{i, j} == goal) return true;
-      for (const auto& [ni, nj] : std::array<std::pair<int, int>, 4>{{{i + 1, j}, {i - 1, j}, {i, j + 1}, {i, j - 1}}})
-        if (open(ni, nj) && !seen[index(ni, nj)]) {
-          seen[index(ni, nj)] = true;
-          queue.emplace_back(ni, nj);
-        }
-    }
-    return false;
+    const cv::Point start = local(from), goal = local(to);
+    if (!open(start) || !open(goal)) return false;
+    cv::Mat reached = open_.clone();
+    cv::floodFill(reached, start, cv::Scalar(kReached), nullptr, cv::Scalar(), cv::Scalar(), 4);
+    return reached.at<std::uint8_t>(goal) == kReached;
   }
 
  private:
-  std::size_t index(int i, int j) const { return std::size_t(j + half_) * std::size_t(2 * half_ + 1) + std::size_t(i + half_); }
-  bool open(int i, int j) const { return std::abs(i) <= half_ && std::abs(j) <= half_ && open_[index(i, j)]; }
+  static constexpr std::uint8_t kClosed = 0, kOpen = 1, kReached = 2;
+
+  // Window cell (i, j), both in [-half_, half_].
+  std::uint8_t& at(int i, int j) { return open_.at<std::uint8_t>(j + half_, i + half_); }
+  bool open(const cv::Point& p) const {
+    return p.inside(cv::Rect(0, 0, open_.cols, open_.rows)) && open_.at<std::uint8_t>(p) == kOpen;
+  }
   bool passable(int i, int j) const {
     if (grid_.cell(i, j) != FreespaceCell::Free) return false;
     for (int dj = -1; dj <= 1; ++dj)
@@ -146,7 +142,7 @@ class LocalWay {
   RegionFreespace grid_;
   LatticeCell centre_;
   int half_;
-  std::vector<bool> open_;
+  cv::Mat open_;  // CV_8UC1, kOpen or kClosed; row j + half_, column i + half_
 };
 
 }  // namespace

@@ -11,7 +11,7 @@
 #include <string_view>
 #include <vector>
 
-#include "core/sim/OccupancyGrid.h"
+#include "core/raster/OccupancyGrid.h"
 #include "core/sim/scenarios/GridDrawing.h"
 #include "core/sim/scenarios/HallwayLayout.h"
 

@@ -3,7 +3,7 @@
 // test worlds.
 #pragma once
 
-#include "core/sim/OccupancyGrid.h"
+#include "core/raster/OccupancyGrid.h"
 
 namespace rgnav {
 

@@ -9,7 +9,7 @@
 #include <vector>
 
 #include "core/gateways/classes/GatewayClass.h"
-#include "core/sim/OccupancyGrid.h"
+#include "core/raster/OccupancyGrid.h"
 #include "core/sim/scenarios/GridDrawing.h"
 
 namespace rgnav {

@@ -19,7 +19,7 @@
 #include <vector>
 
 #include "core/gateways/classes/GatewayClass.h"
-#include "core/sim/OccupancyGrid.h"
+#include "core/raster/OccupancyGrid.h"
 #include "core/sim/scenarios/ApproachTrajectory.h"
 #include "core/sim/scenarios/Clutter.h"
 

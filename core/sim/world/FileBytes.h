@@ -1,5 +1,5 @@
-// readFileBytes: a whole (image or YAML) file into memory, every failure a FileError naming the
-// path. The one place the world loaders touch the file system for reading.
+// readFileBytes: a whole (YAML) file into memory, every failure a FileError naming the
+// path. The world loaders read their YAML files with it; images come through core/raster/ImageFile.h.
 #pragma once
 
 #include <string>

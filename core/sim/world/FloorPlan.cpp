@@ -1,12 +1,12 @@
 // loadFloorPlan: the benchmark's free/occupied threshold applied to a gray image.
 #include "core/sim/world/FloorPlan.h"
 
-#include "core/sim/world/ImageFile.h"
-#include "core/sim/world/ImageGrid.h"
+#include "core/raster/ImageFile.h"
+#include "core/raster/ImageGrid.h"
 
 namespace rgnav {
 
-OccupancyGrid floorPlanFromImage(const GrayImage& image, double resolution, WorldPoint origin) {
+OccupancyGrid floorPlanFromImage(const cv::Mat& image, double resolution, WorldPoint origin) {
   GrayToCell table{};
   for (int gray = 0; gray < 256; ++gray) {
     table[gray] = isFloorPlanFree(static_cast<std::uint8_t>(gray)) ? Cell::Free : Cell::Occupied;

@@ -4,10 +4,10 @@
 #pragma once
 
 #include <cstdint>
+#include <opencv2/core.hpp>
 #include <string>
 
-#include "core/sim/OccupancyGrid.h"
-#include "core/sim/world/Image.h"
+#include "core/raster/OccupancyGrid.h"
 
 namespace rgnav {
 
@@ -16,8 +16,8 @@ constexpr std::uint8_t kFloorPlanFreeGray = 250;
 
 inline bool isFloorPlanFree(std::uint8_t gray) { return gray >= kFloorPlanFreeGray; }
 
-// The floor-plan grid of an image already in memory; `origin` is its bottom-left corner.
-OccupancyGrid floorPlanFromImage(const GrayImage& image, double resolution, WorldPoint origin);
+// The floor-plan grid of an 8-bit gray image (CV_8UC1) already in memory; `origin` is its bottom-left corner.
+OccupancyGrid floorPlanFromImage(const cv::Mat& image, double resolution, WorldPoint origin);
 
 // Loads a PNG or PGM floor plan. FileError / FormatError name the path; a non-positive
 // resolution is an InvalidArgumentError.

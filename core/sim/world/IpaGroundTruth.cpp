@@ -4,28 +4,23 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <opencv2/core.hpp>
 
-#include "core/sim/world/Components.h"
+#include "core/raster/Components.h"
+#include "core/raster/ImageFile.h"
+#include "core/raster/ImageGrid.h"
 #include "core/sim/world/FloorPlan.h"
 #include "core/sim/world/GroundTruthAssembly.h"
-#include "core/sim/world/ImageFile.h"
-#include "core/sim/world/ImageGrid.h"
 
 namespace rgnav {
 namespace {
 
-// Per cell in grid order (row 0 at the bottom): 1 where `test(gray)` holds.
-template <typename Test>
-std::vector<std::uint8_t> gridMask(const GrayImage& image, Test test) {
-  std::vector<std::uint8_t> mask(image.pixels().size());
-  for (int row = 0; row < image.height(); ++row) {
-    for (int col = 0; col < image.width(); ++col) {
-      const CellIndex cell = cellOfPixel(col, row, image.height());
-      mask[static_cast<std::size_t>(cell.row) * static_cast<std::size_t>(image.width()) + static_cast<std::size_t>(cell.col)] =
-          test(image.at(col, row)) ? 1 : 0;
-    }
-  }
-  return mask;
+// Per cell in grid order (row 0 at the bottom, so the image's rows flip): non-zero where the
+// floor plan is free.
+cv::Mat freeGridMask(const cv::Mat& image) {
+  cv::Mat flipped;
+  cv::flip(image, flipped, 0);
+  return flipped >= kFloorPlanFreeGray;
 }
 
 // First and second moments of a blob's cell centres.
@@ -81,20 +76,17 @@ std::vector<DoorLine> separatorLines(const Components& blobs, const OccupancyGri
 
 GroundTruth loadIpaGroundTruth(const std::string& gtPngPath, const std::string& emptyPngPath,
                                const OccupancyGrid& geometry) {
-  const GrayImage truthImage = readGrayImage(gtPngPath);
+  const cv::Mat truthImage = readGrayImage(gtPngPath);
   requireSameSize(truthImage, gtPngPath, geometry);
-  const GrayImage emptyImage = readGrayImage(emptyPngPath);
+  const cv::Mat emptyImage = readGrayImage(emptyPngPath);
   requireSameSize(emptyImage, emptyPngPath, geometry);
 
-  const std::vector<std::uint8_t> truthFree = gridMask(truthImage, isFloorPlanFree);
-  const std::vector<std::uint8_t> emptyFree = gridMask(emptyImage, isFloorPlanFree);
-  std::vector<std::uint8_t> separators(truthFree.size());
-  for (std::size_t i = 0; i < separators.size(); ++i) separators[i] = emptyFree[i] && !truthFree[i];
+  const cv::Mat truthFree = freeGridMask(truthImage);
+  const cv::Mat separators = freeGridMask(emptyImage) & ~truthFree;
 
-  Components rooms = connectedComponents(truthFree, geometry.width(), geometry.height(), kIpaMinRoomPixels);
+  Components rooms = connectedComponents(truthFree, kIpaMinRoomPixels);
   GroundTruth truth = groundTruthFrame(geometry, std::move(rooms.labels), rooms.count());
-  const Components blobs =
-      connectedComponents(separators, geometry.width(), geometry.height(), kIpaMinSeparatorPixels);
+  const Components blobs = connectedComponents(separators, kIpaMinSeparatorPixels);
   truth.doors = separatorLines(blobs, geometry);
   for (DoorLine& door : truth.doors) assignDoorRooms(truth, door, kIpaDoorProbeDistance);
   return truth;

@@ -14,8 +14,8 @@
 
 #include <string>
 
+#include "core/raster/OccupancyGrid.h"
 #include "core/sim/GroundTruth.h"
-#include "core/sim/OccupancyGrid.h"
 
 namespace rgnav {
 

@@ -4,10 +4,9 @@
 #include <cppunit/extensions/HelperMacros.h>
 
 #include "core/logs/LogTestFiles.h"
+#include "core/raster/ImageFile.h"
 #include "core/sim/world/FloorPlan.h"
 #include "core/sim/world/MapServerYaml.h"
-#include "core/sim/world/PgmIo.h"
-#include "core/sim/world/PngIo.h"
 
 using namespace rgnav;
 using rgnav::testing::TempDir;
@@ -16,14 +15,7 @@ using rgnav::testing::writeFile;
 namespace {
 
 // 4 x 2 pixels, top row 0 249 250 255, bottom row 205 254 100 0.
-GrayImage sample() {
-  GrayImage image(4, 2);
-  const std::uint8_t values[2][4] = {{0, 249, 250, 255}, {205, 254, 100, 0}};
-  for (int row = 0; row < 2; ++row) {
-    for (int col = 0; col < 4; ++col) image.set(col, row, values[row][col]);
-  }
-  return image;
-}
+cv::Mat sample() { return (cv::Mat_<std::uint8_t>(2, 4) << 0, 249, 250, 255, 205, 254, 100, 0); }
 
 const char* kMapYaml = R"(image: map.pgm
 resolution: 0.1
@@ -65,7 +57,7 @@ class MapFilesTest : public CppUnit::TestFixture {
  public:
   void floorPlanThresholdAndFlip() {
     TempDir dir;
-    writePng(dir.file("plan.png"), sample());
+    writeImage(dir.file("plan.png"), sample());
     const OccupancyGrid grid = loadFloorPlan(dir.file("plan.png"), 0.1, {1.0, 2.0});
     CPPUNIT_ASSERT_EQUAL(4, grid.width());
     CPPUNIT_ASSERT_EQUAL(2, grid.height());
@@ -92,7 +84,7 @@ class MapFilesTest : public CppUnit::TestFixture {
 
   void mapServerTrinaryWithPgm() {
     TempDir dir;
-    writePgm(dir.file("map.pgm"), sample(), PgmEncoding::Binary);
+    writeImage(dir.file("map.pgm"), sample());
     writeFile(dir.file("map.yaml"), std::string(kMapYaml) + "mode: trinary\n");
     const OccupancyGrid grid = loadMapServerYaml(dir.file("map.yaml"));
     CPPUNIT_ASSERT_DOUBLES_EQUAL(0.1, grid.resolution(), 1e-12);
@@ -109,7 +101,7 @@ class MapFilesTest : public CppUnit::TestFixture {
 
   void mapServerNegateWithPng() {
     TempDir dir;
-    writePng(dir.file("map.png"), sample());
+    writeImage(dir.file("map.png"), sample());
     writeFile(dir.file("map.yaml"), edited(edited(kMapYaml, "map.pgm", "map.png"), "negate: 0", "negate: true"));
     const OccupancyGrid grid = loadMapServerYaml(dir.file("map.yaml"));
     // p = gray / 255: 0 free, 255 occupied.
@@ -119,7 +111,7 @@ class MapFilesTest : public CppUnit::TestFixture {
 
   void mapServerBadFilesAreTypedErrors() {
     TempDir dir;
-    writePgm(dir.file("map.pgm"), sample(), PgmEncoding::Ascii);
+    writeImage(dir.file("map.pgm"), sample());
     const std::string yaml = dir.file("map.yaml");
     writeFile(yaml, std::string(kMapYaml) + "colour: red\n");
     expectError<ConfigError>(yaml, {yaml, "colour", "unknown key"});

@@ -1,7 +1,7 @@
 // loadMapServerYaml: strict map_server YAML reading and trinary thresholding.
 #include "core/sim/world/MapServerYaml.h"
 
-#include "core/sim/world/ImageGrid.h"
+#include "core/raster/ImageGrid.h"
 #include "core/sim/world/WorldYaml.h"
 
 namespace rgnav {
@@ -41,7 +41,7 @@ OccupancyGrid loadMapServerYaml(const std::string& yamlPath) {
     if (root.has("mode") && root["mode"].asString() != "trinary") {
       root["mode"].fail("only mode trinary is supported");
     }
-    const GrayImage image = readReferencedImage(yamlPath, root["image"]);
+    const cv::Mat image = readReferencedImage(yamlPath, root["image"]);
     return gridFromImage(image, resolution, {origin.x(), origin.y()},
                          trinaryTable(negate, occupiedThreshold, freeThreshold));
   });

@@ -1,7 +1,7 @@
 // loadMapServerYaml: ROS map_server map files (YAML + PGM or PNG image), read as map_server's
 // "trinary" mode does: p = (255 - gray) / 255 (p = gray / 255 with negate), p > occupied_thresh
 // occupied, p < free_thresh free, otherwise unknown. Colour images are converted to gray by
-// luminance (PngIo.h), not map_server's channel average.
+// luminance (core/raster/ImageFile.h), not map_server's channel average.
 //
 //   image: map.pgm            # required, relative to the YAML file's folder
 //   resolution: 0.05          # required, m per pixel
@@ -14,7 +14,7 @@
 
 #include <string>
 
-#include "core/sim/OccupancyGrid.h"
+#include "core/raster/OccupancyGrid.h"
 
 namespace rgnav {
 

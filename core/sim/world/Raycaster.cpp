@@ -6,7 +6,7 @@
 #include <limits>
 
 #include "core/common/Errors.h"
-#include "core/sim/DistanceField.h"
+#include "core/raster/DistanceField.h"
 
 namespace rgnav {
 namespace {

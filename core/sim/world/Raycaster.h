@@ -3,6 +3,8 @@
 // precomputed distance to the nearest blocked cell (DistanceField.h); a leap never passes a
 // blocked cell, so the result equals a plain cell-by-cell traversal. Blocked: Occupied, Unknown
 // and everything outside the grid (OccupancyGrid::blocked). No allocation per beam or scan.
+// Ours, not OpenCV's: cv::LineIterator steps between integer pixel centres and cannot leap; a beam
+// starts and ends at real-valued points and needs the exact cell it first enters.
 #pragma once
 
 #include <cstdint>
@@ -10,7 +12,7 @@
 #include <vector>
 
 #include "core/common/Pose2D.h"
-#include "core/sim/OccupancyGrid.h"
+#include "core/raster/OccupancyGrid.h"
 
 namespace rgnav {
 

@@ -14,7 +14,7 @@
 #include <string>
 #include <vector>
 
-#include "core/sim/OccupancyGrid.h"
+#include "core/raster/OccupancyGrid.h"
 
 namespace rgnav {
 

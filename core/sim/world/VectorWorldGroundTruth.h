@@ -3,8 +3,8 @@
 // room, and every door's opening is a door line with the rooms on either side.
 #pragma once
 
+#include "core/raster/OccupancyGrid.h"
 #include "core/sim/GroundTruth.h"
-#include "core/sim/OccupancyGrid.h"
 #include "core/sim/world/VectorWorld.h"
 
 namespace rgnav {

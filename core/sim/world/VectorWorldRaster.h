@@ -5,7 +5,7 @@
 // thin and diagonal walls closed for rays. Open doors cut their opening out of the wall.
 #pragma once
 
-#include "core/sim/OccupancyGrid.h"
+#include "core/raster/OccupancyGrid.h"
 #include "core/sim/world/VectorWorld.h"
 
 namespace rgnav {

@@ -43,9 +43,9 @@ void readExtent(const ConfigNode& root, const std::string& yamlPath, VectorWorld
     const ConfigNode plan = root["floor_plan"];
     plan.expectKeys({"image", "origin"});
     world.min = plan.has("origin") ? readPoint(plan["origin"]) : WorldPoint{};
-    const GrayImage image = readReferencedImage(yamlPath, plan["image"]);
+    const cv::Mat image = readReferencedImage(yamlPath, plan["image"]);
     world.floorPlan = floorPlanFromImage(image, world.resolution, world.min);
-    world.max = {world.min.x + image.width() * world.resolution, world.min.y + image.height() * world.resolution};
+    world.max = {world.min.x + image.cols * world.resolution, world.min.y + image.rows * world.resolution};
   }
 }
 

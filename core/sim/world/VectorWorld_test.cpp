@@ -5,7 +5,7 @@
 #include <cppunit/extensions/HelperMacros.h>
 
 #include "core/logs/LogTestFiles.h"
-#include "core/sim/world/PngIo.h"
+#include "core/raster/ImageFile.h"
 #include "core/sim/world/VectorWorldGroundTruth.h"
 #include "core/sim/world/VectorWorldRaster.h"
 #include "core/sim/world/VectorWorldYaml.h"
@@ -193,9 +193,9 @@ class VectorWorldTest : public CppUnit::TestFixture {
 
   void floorPlanBaseLayer() {
     TempDir dir;
-    GrayImage plan(40, 20, 255);
-    for (int col = 0; col < 40; ++col) plan.set(col, 0, 0);  // top row: a wall
-    writePng(dir.file("plan.png"), plan);
+    cv::Mat plan(20, 40, CV_8UC1, cv::Scalar(255));
+    plan.row(0).setTo(0);  // top row: a wall
+    writeImage(dir.file("plan.png"), plan);
     writeFile(dir.file("world.yaml"), R"(resolution: 0.1
 floor_plan: {image: plan.png, origin: [-1, -1]}
 cylinders: [{center: [1.0, 0.0], radius: 0.1, height: 1.0}]

@@ -4,8 +4,8 @@
 #include <filesystem>
 #include <vector>
 
+#include "core/raster/ImageFile.h"
 #include "core/sim/world/FileBytes.h"
-#include "core/sim/world/ImageFile.h"
 
 namespace rgnav {
 namespace {
@@ -57,7 +57,7 @@ Eigen::Vector3d readPoint3(const ConfigNode& node) {
   return {xyz[0], xyz[1], xyz[2]};
 }
 
-GrayImage readReferencedImage(const std::string& yamlPath, const ConfigNode& node) {
+cv::Mat readReferencedImage(const std::string& yamlPath, const ConfigNode& node) {
   const std::filesystem::path file(node.asString());
   if (file.empty()) node.fail("must not be empty");
   const std::string imagePath =

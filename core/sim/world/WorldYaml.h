@@ -4,13 +4,13 @@
 #pragma once
 
 #include <Eigen/Core>
+#include <opencv2/core.hpp>
 #include <string>
 #include <utility>
 
 #include "core/common/Errors.h"
-#include "core/sim/OccupancyGrid.h"
-#include "core/sim/world/Image.h"
 #include "core/config/ConfigNode.h"
+#include "core/raster/OccupancyGrid.h"
 
 namespace rgnav {
 
@@ -37,6 +37,6 @@ Eigen::Vector3d readPoint3(const ConfigNode& node);   // [x, y, z]
 
 // Loads the image a key names, relative to the YAML file's folder unless absolute. A missing
 // image is a FileError naming the YAML file, the key and the image path.
-GrayImage readReferencedImage(const std::string& yamlPath, const ConfigNode& node);
+cv::Mat readReferencedImage(const std::string& yamlPath, const ConfigNode& node);
 
 }  // namespace rgnav

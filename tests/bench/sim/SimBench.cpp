@@ -7,11 +7,12 @@
 #include <chrono>
 #include <cstdlib>
 #include <iostream>
+#include <opencv2/core.hpp>
 #include <random>
 #include <vector>
 
+#include "core/raster/ImageFile.h"
 #include "core/sim/world/FloorPlan.h"
-#include "core/sim/world/ImageFile.h"
 #include "core/sim/world/LaserModel.h"
 #include "core/sim/world/Raycaster.h"
 #include "tools/common/CommandLine.h"
@@ -29,12 +30,10 @@ std::string defaultMap() {
          "/data/floorplans/ipa_room_segmentation/test_maps/office_c_furnitures.png";
 }
 
-GrayImage tiled(const GrayImage& tile, int size) {
-  GrayImage canvas(size, size);
-  for (int row = 0; row < size; ++row) {
-    for (int col = 0; col < size; ++col) canvas.set(col, row, tile.at(col % tile.width(), row % tile.height()));
-  }
-  return canvas;
+cv::Mat tiled(const cv::Mat& tile, int size) {
+  cv::Mat canvas;
+  cv::repeat(tile, size / tile.rows + 1, size / tile.cols + 1, canvas);
+  return canvas(cv::Rect(0, 0, size, size)).clone();
 }
 
 std::vector<Pose2D> randomFreePoses(const OccupancyGrid& grid, std::size_t count, std::uint64_t seed) {
@@ -65,7 +64,7 @@ int main(int argc, char** argv) {
       ("map", po::value(&mapPath)->default_value(mapPath), "floor plan tiled into the 2000 x 2000 canvas");
   try {
     if (!parseCommandLine(argc, argv, desc)) return 0;
-    const GrayImage plan = readGrayImage(mapPath);
+    const cv::Mat plan = readGrayImage(mapPath);
     const OccupancyGrid grid = floorPlanFromImage(tiled(plan, kCanvasSize), kFloorPlanResolution, {});
     const auto setupStart = std::chrono::steady_clock::now();
     const Raycaster raycaster(grid);
@@ -92,7 +91,7 @@ int main(int argc, char** argv) {
     const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     const double beams = double(poses.size()) * double(ranges.size());
 
-    std::cout << "map: " << mapPath << " (" << plan.width() << "x" << plan.height() << " px) tiled into "
+    std::cout << "map: " << mapPath << " (" << plan.cols << "x" << plan.rows << " px) tiled into "
               << kCanvasSize << "x" << kCanvasSize << " cells of " << kFloorPlanResolution << " m\n"
               << "scans: " << poses.size() << " x " << ranges.size() << " beams, max range " << config.maxRange
               << " m, random free poses (seed " << seed << "), one thread\n"

@@ -1,52 +1,48 @@
-// The door evaluation's debug picture (see DebugImage.h).
+// The door evaluation's debug picture (see DebugImage.h), drawn with OpenCV.
 #include "tests/eval/doors/DebugImage.h"
 
-#include <array>
 #include <cmath>
+#include <opencv2/core.hpp>
+#include <opencv2/imgproc.hpp>
 
-#include "core/sim/world/PngIo.h"
+#include "core/raster/GridMat.h"
+#include "core/raster/ImageFile.h"
 
 namespace rgnav {
 namespace {
 
 constexpr int kScale = 3;
-using Rgb = std::array<std::uint8_t, 3>;
+constexpr int kLinePixels = 2;
+
+// Colours in OpenCV's BGR order.
+const cv::Scalar kBlocked(90, 90, 90), kExcludedDoor(0, 160, 255), kFoundDoor(0, 190, 0), kMissedDoor(0, 0, 230);
+const cv::Scalar kMatch(255, 0, 0), kFalse(230, 0, 230), kOther(220, 200, 0);
 
 class Canvas {
  public:
   explicit Canvas(const OccupancyGrid& world)
-      : world_(world), image_(world.width() * kScale, world.height() * kScale, 255) {
-    for (int row = 0; row < world.height(); ++row)
-      for (int col = 0; col < world.width(); ++col)
-        if (world.blocked({col, row})) fillCell(col, row, {90, 90, 90});
+      : world_(world), image_(world.height() * kScale, world.width() * kScale, CV_8UC3, cv::Scalar::all(255)) {
+    cv::Mat blocked;
+    cv::flip(cellMat(world) != static_cast<int>(Cell::Free), blocked, 0);  // image row 0 is the top
+    cv::resize(blocked, blocked, image_.size(), 0, 0, cv::INTER_NEAREST);
+    image_.setTo(kBlocked, blocked);
   }
 
-  void line(const Eigen::Vector2d& a, const Eigen::Vector2d& b, const Rgb& colour) {
-    const double pixel = world_.resolution() / kScale;
-    const int steps = 1 + static_cast<int>((b - a).norm() / (pixel / 2.0));
-    for (int i = 0; i <= steps; ++i) {
-      const Eigen::Vector2d p = a + (b - a) * (double(i) / steps);
-      const int x = static_cast<int>(std::floor((p.x() - world_.origin().x) / pixel));
-      const int y = image_.height() - 1 - static_cast<int>(std::floor((p.y() - world_.origin().y) / pixel));
-      for (int dy = 0; dy < 2; ++dy)
-        for (int dx = 0; dx < 2; ++dx) set(x + dx, y + dy, colour);
-    }
+  void line(const Eigen::Vector2d& a, const Eigen::Vector2d& b, const cv::Scalar& colour) {
+    cv::line(image_, pixelOf(a), pixelOf(b), colour, kLinePixels, cv::LINE_8);
   }
 
-  const RgbImage& image() const { return image_; }
+  const cv::Mat& image() const { return image_; }
 
  private:
-  void fillCell(int col, int row, const Rgb& colour) {
-    for (int dy = 0; dy < kScale; ++dy)
-      for (int dx = 0; dx < kScale; ++dx) set(col * kScale + dx, (world_.height() - 1 - row) * kScale + dy, colour);
-  }
-  void set(int x, int y, const Rgb& colour) {
-    if (x < 0 || y < 0 || x >= image_.width() || y >= image_.height()) return;
-    for (int c = 0; c < 3; ++c) image_.set(x, y, colour[static_cast<std::size_t>(c)], c);
+  cv::Point pixelOf(const Eigen::Vector2d& p) const {
+    const double pixel = world_.resolution() / kScale;
+    return {static_cast<int>(std::floor((p.x() - world_.origin().x) / pixel)),
+            image_.rows - 1 - static_cast<int>(std::floor((p.y() - world_.origin().y) / pixel))};
   }
 
   const OccupancyGrid& world_;
-  RgbImage image_;
+  cv::Mat image_;
 };
 
 }  // namespace
@@ -55,19 +51,17 @@ void writeDoorImage(const std::string& path, const OccupancyGrid& world, const s
                     const std::vector<TrackedGateway>& gateways, const DoorMatch& match) {
   Canvas canvas(world);
   for (std::size_t d = 0; d < doors.size(); ++d) {
-    const Rgb colour = doors[d].exclusion != DoorExclusion::kNone ? Rgb{255, 160, 0}
-                       : match.detectionOfDoor[d] >= 0        ? Rgb{0, 190, 0}
-                                                              : Rgb{230, 0, 0};
+    const cv::Scalar colour = doors[d].exclusion != DoorExclusion::kNone ? kExcludedDoor
+                              : match.detectionOfDoor[d] >= 0        ? kFoundDoor
+                                                                     : kMissedDoor;
     canvas.line({doors[d].line.a.x, doors[d].line.a.y}, {doors[d].line.b.x, doors[d].line.b.y}, colour);
   }
   for (std::size_t k = 0; k < gateways.size(); ++k) {
     const DetectionOutcome o = match.outcomes[k];
-    const Rgb colour = o == DetectionOutcome::kMatch ? Rgb{0, 0, 255}
-                       : o == DetectionOutcome::kFalse ? Rgb{230, 0, 230}
-                                                       : Rgb{0, 200, 220};
-    canvas.line(gateways[k].left, gateways[k].right, colour);
+    canvas.line(gateways[k].left, gateways[k].right,
+                o == DetectionOutcome::kMatch ? kMatch : o == DetectionOutcome::kFalse ? kFalse : kOther);
   }
-  writePng(path, canvas.image());
+  writeImage(path, canvas.image());
 }
 
 }  // namespace rgnav

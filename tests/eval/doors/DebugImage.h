@@ -8,7 +8,7 @@
 #include <vector>
 
 #include "core/gateways/passages/PassageTracker.h"
-#include "core/sim/OccupancyGrid.h"
+#include "core/raster/OccupancyGrid.h"
 #include "tests/eval/doors/DoorMatching.h"
 #include "tests/eval/doors/DoorTruth.h"
 

@@ -20,8 +20,8 @@
 #include <string>
 #include <vector>
 
+#include "core/raster/OccupancyGrid.h"
 #include "core/sim/GroundTruth.h"
-#include "core/sim/OccupancyGrid.h"
 
 namespace rgnav {
 

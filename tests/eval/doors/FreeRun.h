@@ -5,7 +5,7 @@
 
 #include <Eigen/Core>
 
-#include "core/sim/OccupancyGrid.h"
+#include "core/raster/OccupancyGrid.h"
 
 namespace rgnav {
 

@@ -10,8 +10,8 @@
 
 #include "core/gateways/passages/NarrowPassageDetector.h"
 #include "core/gateways/passages/PassageTracker.h"
+#include "core/raster/OccupancyGrid.h"
 #include "core/sim/GroundTruth.h"
-#include "core/sim/OccupancyGrid.h"
 
 namespace rgnav {
 

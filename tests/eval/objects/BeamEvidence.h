@@ -12,7 +12,7 @@
 #include <vector>
 
 #include "core/common/SensorData.h"
-#include "core/sim/OccupancyGrid.h"
+#include "core/raster/OccupancyGrid.h"
 
 namespace rgnav {
 

@@ -2,8 +2,10 @@
 #include "tests/eval/objects/DebugImage.h"
 
 #include <array>
+#include <opencv2/core.hpp>
+#include <opencv2/imgproc.hpp>
 
-#include "core/sim/world/PngIo.h"
+#include "core/raster/ImageFile.h"
 
 namespace rgnav {
 namespace {
@@ -31,9 +33,9 @@ Colour outcomeColour(Outcome outcome) {
   return {0, 0, 0};
 }
 
-void paint(RgbImage& image, int x, int y, const Colour& c) {
-  for (int k = 0; k < 3; ++k) image.set(x, y, c[static_cast<std::size_t>(k)], k);
-}
+cv::Scalar bgr(const Colour& c) { return {double(c[2]), double(c[1]), double(c[0])}; }
+
+void paint(cv::Mat& image, int x, int y, const Colour& c) { image.at<cv::Vec3b>(y, x) = {c[2], c[1], c[0]}; }
 
 }  // namespace
 
@@ -41,16 +43,14 @@ void writeDebugImage(const std::string& path, const OccupancyGrid& world, const 
                      const std::vector<Detection>& detections, const MatchResult& match,
                      const std::vector<bool>& hitCells) {
   const int w = world.width(), h = world.height();
-  RgbImage image(w * kScale, h * kScale);
+  cv::Mat image(h * kScale, w * kScale, CV_8UC3);
   const auto pixelOf = [&](std::size_t cell) {
     return std::pair(static_cast<int>(cell % static_cast<std::size_t>(w)) * kScale,
                      (h - 1 - static_cast<int>(cell / static_cast<std::size_t>(w))) * kScale);
   };
   for (std::size_t cell = 0; cell < world.cells().size(); ++cell) {
     const auto [x, y] = pixelOf(cell);
-    const Colour c = cellColour(world, truth, match, cell);
-    for (int dy = 0; dy < kScale; ++dy)
-      for (int dx = 0; dx < kScale; ++dx) paint(image, x + dx, y + dy, c);
+    cv::rectangle(image, cv::Rect(x, y, kScale, kScale), bgr(cellColour(world, truth, match, cell)), cv::FILLED);
     if (hitCells[cell]) paint(image, x, y, {0, 0, 0});
   }
   for (std::size_t d = 0; d < detections.size(); ++d)
@@ -58,7 +58,7 @@ void writeDebugImage(const std::string& path, const OccupancyGrid& world, const 
       const auto [x, y] = pixelOf(cell);
       paint(image, x + kScale / 2, y + kScale / 2, outcomeColour(match.outcomes[d]));
     }
-  writePng(path, image);
+  writeImage(path, image);
 }
 
 }  // namespace rgnav

@@ -9,7 +9,7 @@
 #include <string>
 #include <vector>
 
-#include "core/sim/OccupancyGrid.h"
+#include "core/raster/OccupancyGrid.h"
 #include "tests/eval/objects/FurnitureTruth.h"
 #include "tests/eval/objects/Matching.h"
 

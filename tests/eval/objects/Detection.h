@@ -8,7 +8,7 @@
 #include <vector>
 
 #include "core/objects/ConvexPolygon.h"
-#include "core/sim/OccupancyGrid.h"
+#include "core/raster/OccupancyGrid.h"
 
 namespace rgnav {
 

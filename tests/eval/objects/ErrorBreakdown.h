@@ -8,7 +8,7 @@
 #include <cstddef>
 #include <vector>
 
-#include "core/sim/OccupancyGrid.h"
+#include "core/raster/OccupancyGrid.h"
 #include "tests/eval/objects/Detection.h"
 #include "tests/eval/objects/FurnitureTruth.h"
 #include "tests/eval/objects/Matching.h"

@@ -28,8 +28,8 @@
 
 #include "core/objects/CircleDetector.h"
 #include "core/objects/RectangleDetector.h"
+#include "core/raster/OccupancyGrid.h"
 #include "core/rgmap/describe/RegionObjects.h"
-#include "core/sim/OccupancyGrid.h"
 #include "tests/eval/objects/Detection.h"
 #include "tests/eval/objects/TourScans.h"
 

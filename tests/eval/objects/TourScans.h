@@ -9,8 +9,8 @@
 #include <vector>
 
 #include "core/common/SensorData.h"
+#include "core/raster/OccupancyGrid.h"
 #include "core/sim/GroundTruth.h"
-#include "core/sim/OccupancyGrid.h"
 #include "core/sim/TourRun.h"
 
 namespace rgnav {

@@ -8,7 +8,7 @@
 
 #include <vector>
 
-#include "core/sim/OccupancyGrid.h"
+#include "core/raster/OccupancyGrid.h"
 #include "tests/eval/objects/FurnitureTruth.h"
 
 namespace rgnav {

@@ -2,8 +2,8 @@
 #include "tests/eval/rooms/DebugImage.h"
 
 #include "core/lines/ScanPoints.h"
+#include "core/raster/ImageFile.h"
 #include "core/rgmap/export/MapCanvas.h"
-#include "core/sim/world/PngIo.h"
 #include "tests/eval/rooms/ObjectScoring.h"
 
 namespace rgnav {
@@ -71,7 +71,7 @@ MapCanvas drawRegions(const OccupancyGrid& world, const GroundTruth& truth, cons
 
 void writeRoomImage(const std::string& path, const OccupancyGrid& world, const GroundTruth& truth,
                     const FinalMap& map, const Pose2D& mapToWorld, std::span<const SegmentPixels> regions) {
-  writePng(path, drawRegions(world, truth, map, mapToWorld, regions).image());
+  writeImage(path, drawRegions(world, truth, map, mapToWorld, regions).image());
 }
 
 void writeRegionImage(const std::string& path, const OccupancyGrid& world, const GroundTruth& truth,
@@ -82,7 +82,7 @@ void writeRegionImage(const std::string& path, const OccupancyGrid& world, const
     const Eigen::Vector2i pixel = canvas.pixelOf(p);
     canvas.setPixel(pixel.x(), pixel.y(), kScanPosition);
   }
-  writePng(path, canvas.image());
+  writeImage(path, canvas.image());
 }
 
 }  // namespace rgnav

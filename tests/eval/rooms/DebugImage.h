@@ -15,8 +15,8 @@
 #include <string>
 
 #include "core/common/Pose2D.h"
+#include "core/raster/OccupancyGrid.h"
 #include "core/sim/GroundTruth.h"
-#include "core/sim/OccupancyGrid.h"
 #include "tests/eval/rooms/FinalMap.h"
 #include "tests/eval/rooms/RoomScoring.h"
 

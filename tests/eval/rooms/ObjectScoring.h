@@ -14,7 +14,7 @@
 
 #include "core/common/Pose2D.h"
 #include "core/objects/ConvexPolygon.h"
-#include "core/sim/OccupancyGrid.h"
+#include "core/raster/OccupancyGrid.h"
 #include "tests/eval/objects/FurnitureTruth.h"
 #include "tests/eval/rooms/FinalMap.h"
 

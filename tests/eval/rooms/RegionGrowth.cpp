@@ -1,7 +1,10 @@
-// Regions grown into the unclaimed free cells along their walls (see RegionGrowth.h).
+// Regions grown into the unclaimed free cells along their walls (see RegionGrowth.h): the
+// wavefront is a geodesic dilation, cv::dilate with the 8-neighbourhood repeated maxGrowCells
+// times within the region's own and the unclaimed cells.
 #include "tests/eval/rooms/RegionGrowth.h"
 
-#include <deque>
+#include <opencv2/core.hpp>
+#include <opencv2/imgproc.hpp>
 #include <string>
 
 #include "core/common/Errors.h"
@@ -22,29 +25,21 @@ void growIntoUnclaimed(std::span<RegionRaster> regions, std::span<const std::uin
     for (std::size_t i = 0; i < cells; ++i)
       if (region.claimed[i] != 0) unclaimed[i] = 0;
   }
-  std::vector<int> steps(cells);
+  if (cells == 0) return;
+  const cv::Mat unclaimedMask = cv::Mat(height, width, CV_8UC1, unclaimed.data()) != 0;
+  const cv::Mat neighbours = cv::getStructuringElement(cv::MORPH_RECT, cv::Size(3, 3));
   for (RegionRaster& region : regions) {
-    std::deque<std::size_t> front;
-    for (std::size_t i = 0; i < cells; ++i) {
-      steps[i] = region.claimed[i] != 0 ? 0 : -1;
-      if (region.claimed[i] != 0) front.push_back(i);
+    cv::Mat claimed(height, width, CV_8UC1, region.claimed.data());
+    const cv::Mat reachable = (claimed != 0) | unclaimedMask;
+    cv::Mat grown = claimed != 0;
+    for (int step = 0; step < maxGrowCells; ++step) {
+      cv::Mat next;
+      cv::dilate(grown, next, neighbours);
+      next &= reachable;
+      if (cv::countNonZero(next != grown) == 0) break;
+      grown = next;
     }
-    while (!front.empty()) {
-      const std::size_t cell = front.front();
-      front.pop_front();
-      if (steps[cell] >= maxGrowCells) continue;
-      const int col = int(cell % std::size_t(width)), row = int(cell / std::size_t(width));
-      for (int dr = -1; dr <= 1; ++dr)
-        for (int dc = -1; dc <= 1; ++dc) {
-          const int c = col + dc, r = row + dr;
-          if (c < 0 || r < 0 || c >= width || r >= height) continue;
-          const std::size_t next = std::size_t(r) * std::size_t(width) + std::size_t(c);
-          if (unclaimed[next] == 0 || steps[next] >= 0) continue;
-          steps[next] = steps[cell] + 1;
-          region.claimed[next] = 1;
-          front.push_back(next);
-        }
-    }
+    claimed.setTo(1, grown & unclaimedMask);
   }
 }
 

@@ -1,8 +1,9 @@
-// Holes in regions filled; see RegionHoles.h.
+// Holes in regions filled (see RegionHoles.h): the 4-connected gaps of each region's bounding box
+// by cv::connectedComponentsWithStats; a gap is a hole if its box lies inside the region's box.
 #include "tests/eval/rooms/RegionHoles.h"
 
-#include <algorithm>
-#include <array>
+#include <opencv2/core.hpp>
+#include <opencv2/imgproc.hpp>
 #include <string>
 #include <vector>
 
@@ -11,22 +12,8 @@
 namespace rgnav {
 namespace {
 
-struct Box {
-  int col0, row0, col1, row1;  // inclusive
-};
-
-// The bounding box of the claimed cells; none claimed: col0 > col1.
-Box claimedBox(const std::vector<std::uint8_t>& claimed, int width, int height) {
-  Box box{width, height, -1, -1};
-  for (int row = 0; row < height; ++row)
-    for (int col = 0; col < width; ++col)
-      if (claimed[std::size_t(row) * std::size_t(width) + std::size_t(col)] != 0) {
-        box.col0 = std::min(box.col0, col);
-        box.col1 = std::max(box.col1, col);
-        box.row0 = std::min(box.row0, row);
-        box.row1 = std::max(box.row1, row);
-      }
-  return box;
+cv::Mat claimedMat(RegionRaster& region, int width, int height) {
+  return cv::Mat(height, width, CV_8UC1, region.claimed.data());
 }
 
 }  // namespace
@@ -34,52 +21,36 @@ Box claimedBox(const std::vector<std::uint8_t>& claimed, int width, int height) 
 void fillEnclosedHoles(std::span<RegionRaster> regions, int width, int height, std::size_t maxHoleCells) {
   if (width < 0 || height < 0) throw InvalidArgumentError("fillEnclosedHoles: negative map size");
   const std::size_t cells = std::size_t(width) * std::size_t(height);
-  std::vector<std::uint16_t> claims(cells, 0);
-  for (const RegionRaster& region : regions) {
+  for (const RegionRaster& region : regions)
     if (region.claimed.size() != cells)
       throw InvalidArgumentError("fillEnclosedHoles: region " + std::to_string(region.regionId) +
                                  " has a raster of the wrong size");
-    for (std::size_t i = 0; i < cells; ++i) claims[i] += region.claimed[i] != 0 ? 1 : 0;
+  if (cells == 0) return;
+  // Before any filling: a hole holds no pixel of another region as the regions came in.
+  cv::Mat anyClaimed(height, width, CV_8UC1, cv::Scalar(0));
+  for (RegionRaster& region : regions) anyClaimed |= claimedMat(region, width, height) != 0;
+  for (RegionRaster& region : regions) {
+    const cv::Mat claimed = claimedMat(region, width, height);
+    const cv::Rect box = cv::boundingRect(claimed);
+    if (box.empty()) continue;
+    cv::Mat labels, stats, centroids;
+    const int n = cv::connectedComponentsWithStats(claimed(box) == 0, labels, stats, centroids, 4, CV_32S);
+    std::vector<std::uint8_t> hole(std::size_t(n), 0);
+    for (int label = 1; label < n; ++label) {
+      const int left = stats.at<int>(label, cv::CC_STAT_LEFT), top = stats.at<int>(label, cv::CC_STAT_TOP);
+      hole[std::size_t(label)] = left > 0 && top > 0 && left + stats.at<int>(label, cv::CC_STAT_WIDTH) < box.width &&
+                                 top + stats.at<int>(label, cv::CC_STAT_HEIGHT) < box.height &&
+                                 std::size_t(stats.at<int>(label, cv::CC_STAT_AREA)) <= maxHoleCells;
+    }
+    const cv::Mat others = anyClaimed(box);
+    for (int row = 0; row < box.height; ++row)
+      for (int col = 0; col < box.width; ++col)
+        if (others.at<std::uint8_t>(row, col) != 0) hole[std::size_t(labels.at<int>(row, col))] = 0;
+    cv::Mat inBox = claimed(box);
+    for (int row = 0; row < box.height; ++row)
+      for (int col = 0; col < box.width; ++col)
+        if (hole[std::size_t(labels.at<int>(row, col))] != 0) inBox.at<std::uint8_t>(row, col) = 1;
   }
-  std::vector<std::vector<std::size_t>> holes(regions.size());
-  std::vector<std::uint8_t> seen(cells, 0);
-  for (std::size_t k = 0; k < regions.size(); ++k) {
-    const std::vector<std::uint8_t>& claimed = regions[k].claimed;
-    const Box box = claimedBox(claimed, width, height);
-    std::vector<std::size_t> component, stack;
-    for (int row = box.row0; row <= box.row1; ++row)
-      for (int col = box.col0; col <= box.col1; ++col) {
-        const std::size_t start = std::size_t(row) * std::size_t(width) + std::size_t(col);
-        if (claimed[start] != 0 || seen[start] != 0) continue;
-        component.clear();
-        stack.assign(1, start);
-        seen[start] = 1;
-        bool enclosed = true;
-        while (!stack.empty()) {
-          const std::size_t cell = stack.back();
-          stack.pop_back();
-          component.push_back(cell);
-          enclosed = enclosed && claims[cell] == 0;
-          const int c = int(cell % std::size_t(width)), r = int(cell / std::size_t(width));
-          if (c == box.col0 || c == box.col1 || r == box.row0 || r == box.row1) enclosed = false;
-          for (const auto& [dc, dr] : std::array<std::pair<int, int>, 4>{{{1, 0}, {-1, 0}, {0, 1}, {0, -1}}}) {
-            const int nc = c + dc, nr = r + dr;
-            if (nc < box.col0 || nr < box.row0 || nc > box.col1 || nr > box.row1) continue;
-            const std::size_t next = std::size_t(nr) * std::size_t(width) + std::size_t(nc);
-            if (claimed[next] != 0 || seen[next] != 0) continue;
-            seen[next] = 1;
-            stack.push_back(next);
-          }
-        }
-        if (enclosed && component.size() <= maxHoleCells)
-          holes[k].insert(holes[k].end(), component.begin(), component.end());
-      }
-    for (int row = box.row0; row <= box.row1; ++row)
-      for (int col = box.col0; col <= box.col1; ++col)
-        seen[std::size_t(row) * std::size_t(width) + std::size_t(col)] = 0;
-  }
-  for (std::size_t k = 0; k < regions.size(); ++k)
-    for (const std::size_t cell : holes[k]) regions[k].claimed[cell] = 1;
 }
 
 }  // namespace rgnav

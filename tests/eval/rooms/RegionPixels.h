@@ -15,7 +15,7 @@
 #include <vector>
 
 #include "core/common/Pose2D.h"
-#include "core/sim/OccupancyGrid.h"
+#include "core/raster/OccupancyGrid.h"
 #include "tests/eval/rooms/FinalMap.h"
 #include "tests/eval/rooms/RoomScoring.h"
 

@@ -20,8 +20,8 @@
 
 #include <span>
 
+#include "core/raster/OccupancyGrid.h"
 #include "core/sim/GroundTruth.h"
-#include "core/sim/OccupancyGrid.h"
 #include "tests/eval/objects/FurnitureTruth.h"
 #include "tests/eval/rooms/RoomScoring.h"
 

@@ -15,8 +15,8 @@
 #include <cstdint>
 #include <string>
 
+#include "core/raster/OccupancyGrid.h"
 #include "core/sim/GroundTruth.h"
-#include "core/sim/OccupancyGrid.h"
 #include "tests/eval/rooms/MappingRun.h"
 
 namespace rgnav {

@@ -1,7 +1,9 @@
-// OccupancyGrid: the simulator's world as a grid of free / occupied / unknown cells with a
+// OccupancyGrid: a world as a grid of free / occupied / unknown cells with a
 // resolution and an origin. World frame: x to the right, y up, metres. Cell (col, row) covers
 // [origin.x + col*res, origin.x + (col+1)*res) x [origin.y + row*res, origin.y + (row+1)*res);
-// row 0 is at the bottom (image loaders flip: image row 0 is the top).
+// row 0 is at the bottom (image loaders flip: image row 0 is the top; ImageGrid.h). The simulator's
+// worlds, the exported global map and the ground truth are such grids; GridMat.h hands the cells
+// to OpenCV.
 #pragma once
 
 #include <cmath>

@@ -1,11 +1,12 @@
-// squaredDistanceToBlocked: the exact Euclidean distance transform of an occupancy grid
-// (Felzenszwalb & Huttenlocher, "Distance Transforms of Sampled Functions", 2012): the raycaster
-// skips empty space with it, the planner keeps its clearance with it.
+// squaredDistanceToBlocked: the exact Euclidean distance transform of an occupancy grid, by
+// OpenCV's cv::distanceTransform (DIST_L2, DIST_MASK_PRECISE: Felzenszwalb & Huttenlocher,
+// "Distance Transforms of Sampled Functions", 2012): the raycaster skips empty space with it,
+// the planner keeps its clearance with it.
 #pragma once
 
 #include <vector>
 
-#include "core/sim/OccupancyGrid.h"
+#include "core/raster/OccupancyGrid.h"
 
 namespace rgnav {
 
