@@ -15,12 +15,14 @@
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
+#include <stdexcept>
 #include <thread>
 
 #include "Echo.hh"
 #include "clientlibs/common/ClientOrb.h"
 #include "clientlibs/common/convert.h"
 #include "clientlibs/laser/LaserClient.h"
+#include "tests/support/WaitUntil.h"
 #include "tests/support/cluster/Interruption.h"
 #include "tests/support/cluster/TestCluster.h"
 #include "watchdog/Spawn.h"
@@ -100,15 +102,17 @@ int main(int argc, char** argv) {
         ("corbaloc::127.0.0.1:" + std::to_string(echoPort) + "/Echo").c_str());
     RGNavBench::Echo_var echo = RGNavBench::Echo::_narrow(echoObj);
     omniORB::setClientCallTimeout(echo, static_cast<CORBA::ULong>(settings.callTimeout.count()));
-    for (int attempt = 0;; ++attempt) {  // the echo server may still be starting
-      try {
-        RGNavBench::Bytes_var warm = echo->fetch(bytes);
-        break;
-      } catch (const CORBA::TRANSIENT&) {
-        if (attempt > 500) throw;
-        std::this_thread::sleep_for(std::chrono::milliseconds(10));
-      }
-    }
+    const bool echoAnswers = pollUntil(  // the echo server may still be starting
+        [&] {
+          try {
+            RGNavBench::Bytes_var warm = echo->fetch(bytes);
+            return true;
+          } catch (const CORBA::TRANSIENT&) {
+            return false;
+          }
+        },
+        std::chrono::seconds(20), std::chrono::milliseconds(10));
+    if (!echoAnswers) throw std::runtime_error("the echo server did not answer");
 
     cpu_set_t allCpus, cpu0;
     sched_getaffinity(0, sizeof allCpus, &allCpus);

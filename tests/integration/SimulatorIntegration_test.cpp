@@ -73,14 +73,23 @@ class SimulatorIntegrationTest : public CppUnit::TestFixture {
       return batch.records.back().pose;
     };
     const Pose2D before = latestPose();
-    for (int i = 0; i < 20; ++i) {  // 1 s of commands at 20 Hz
+    for (int i = 0; i < 20; ++i) {  // 1 s of commands at 20 Hz: the pace is the scenario
       base.setVelocity(0.0, 0.5);
       std::this_thread::sleep_for(std::chrono::milliseconds(50));
     }
     const Pose2D turned = latestPose();
     CPPUNIT_ASSERT(std::abs(normalizeAngle(turned.theta - before.theta)) > 0.1);
-    std::this_thread::sleep_for(std::chrono::milliseconds(1500));  // commands lapse after 0.5 s
-    const Pose2D settled = latestPose();
+    // Commands lapse after 0.5 s: the robot comes to rest (two readings 0.2 s apart agree).
+    Pose2D settled = latestPose();
+    waitUntil(
+        [&] {
+          const Pose2D now = latestPose();
+          const bool still = std::abs(normalizeAngle(now.theta - settled.theta)) < 1e-9;
+          settled = now;
+          return still;
+        },
+        "the robot to stop after its commands lapsed", std::chrono::seconds(10), std::chrono::milliseconds(200));
+    // Waiting out half a second more is the scenario: it proves the robot stays at rest.
     std::this_thread::sleep_for(std::chrono::milliseconds(500));
     CPPUNIT_ASSERT_DOUBLES_EQUAL(settled.theta, latestPose().theta, 1e-9);
     CPPUNIT_ASSERT_THROW(base.setVelocity(NAN, 0.0), InvalidArgumentError);
