@@ -206,17 +206,9 @@ int main(int argc, char** argv) {
     if (!options.debugDir.empty()) std::filesystem::create_directories(options.debugDir);
     options.rule.approachM = options.setup.detector.maxDistanceM;
     printHeader(options);
-    const IpaSplit split = loadIpaSplit(options.split);
-    for (const std::string& map : maps) split.setOf(map);  // an unknown map fails before the long run
-    Counts total, bySet[2];
-    std::size_t mapsIn[2] = {0, 0};
-    for (const std::string& map : maps) {
-      const Counts counts = evaluate(map, options);
-      const auto set = static_cast<std::size_t>(split.setOf(map));
-      total.add(counts);
-      bySet[set].add(counts);
-      ++mapsIn[set];
-    }
+    const SplitTotals<Counts> totals = evaluateMaps<Counts>(
+        loadIpaSplit(options.split), maps, [&](const std::string& map) { return evaluate(map, options); });
+    const Counts& total = totals.all;
     std::printf("# GT lines=%zu no-pair=%zu wide=%zu unreachable=%zu far=%zu counted=%zu; scans=%zu "
                 "single-scan hypotheses=%zu traversal events=%zu\n",
                 total.lines, total.notBetweenRooms, total.notNarrow, total.unreachable, total.notApproached,
@@ -229,8 +221,7 @@ int main(int argc, char** argv) {
       return std::vector<Figure>{{"precision", ratio(c.all.matches, c.all.detections)},
                                  {"recall", ratio(c.all.matches, c.all.doors)}};
     };
-    std::printf("%s\n", splitFiguresLine("doors_laser_split", mapsIn[0], figures(bySet[0]), mapsIn[1],
-                                         figures(bySet[1])).c_str());
+    std::printf("%s\n", splitFiguresLine("doors_laser_split", totals, figures).c_str());
     std::printf("doors_laser: precision=%.3f recall=%.3f\n", ratio(total.all.matches, total.all.detections),
                 ratio(total.all.matches, total.all.doors));
     return 0;

@@ -109,7 +109,8 @@ Totals evaluate(const std::string& map, const Options& options) {
   return counts;
 }
 
-void printSummary(const Totals& t, std::size_t maps, const Totals (&bySet)[2], const std::size_t (&mapsIn)[2]) {
+void printSummary(const SplitTotals<Totals>& totals, std::size_t maps) {
+  const Totals& t = totals.all;
   for (std::size_t k = 0; k < kDetectionKinds; ++k)
     std::printf("# %-9s detections=%zu matches=%zu precision=%.3f\n", kindName(static_cast<DetectionKind>(k)).c_str(),
                 t.detectionsByKind[k], t.matchesByKind[k], ratio(t.matchesByKind[k], t.detectionsByKind[k]));
@@ -124,8 +125,7 @@ void printSummary(const Totals& t, std::size_t maps, const Totals (&bySet)[2], c
   const auto figures = [](const Totals& s) {
     return std::vector<Figure>{{"precision", ratio(s.matches, s.detections)}, {"recall", ratio(s.matches, s.truthObjects)}};
   };
-  std::printf("%s\n", splitFiguresLine("objects2d_split", mapsIn[0], figures(bySet[0]), mapsIn[1],
-                                       figures(bySet[1])).c_str());
+  std::printf("%s\n", splitFiguresLine("objects2d_split", totals, figures).c_str());
   std::printf("objects2d: maps=%zu precision=%.3f recall=%.3f\n", maps, ratio(t.matches, t.detections),
               ratio(t.matches, t.truthObjects));
 }
@@ -163,18 +163,9 @@ int main(int argc, char** argv) {
     if (!parseCommandLine(argc, argv, desc, positional)) return 0;
     if (!options.debugDir.empty()) std::filesystem::create_directories(options.debugDir);
     printHeader(options);
-    const IpaSplit split = loadIpaSplit(options.split);
-    for (const std::string& map : maps) split.setOf(map);  // an unknown map fails before the long run
-    Totals totals, bySet[2];
-    std::size_t mapsIn[2] = {0, 0};
-    for (const std::string& map : maps) {
-      const Totals counts = evaluate(map, options);
-      const auto set = static_cast<std::size_t>(split.setOf(map));
-      totals.add(counts);
-      bySet[set].add(counts);
-      ++mapsIn[set];
-    }
-    printSummary(totals, maps.size(), bySet, mapsIn);
+    printSummary(evaluateMaps<Totals>(loadIpaSplit(options.split), maps,
+                                      [&](const std::string& map) { return evaluate(map, options); }),
+                 maps.size());
     return 0;
   } catch (const po::error& e) {
     std::cerr << "rgnav-eval-objects: " << e.what() << "\n" << desc << std::endl;

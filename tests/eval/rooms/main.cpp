@@ -270,14 +270,9 @@ int main(int argc, char** argv) {
                         "--true-poses, --max-tour-s, --list and --region-pictures need the in-process run");
     if (options.serverSet) testing::catchInterruptions();  // so that a stopped run removes its server set's directory
     printHeader(classifier.has_value(), options.setup.truePoses, options.serverSet, options.growM, options.maxHoleM2);
-    const IpaSplit split = loadIpaSplit(options.split);
-    for (const std::string& map : maps) split.setOf(map);  // an unknown map fails before the long run
-    Totals totals, bySet[2];
-    for (const std::string& map : maps) {
-      const Totals one = evaluate(map, options, classifier);
-      totals.add(one);
-      bySet[static_cast<std::size_t>(split.setOf(map))].add(one);
-    }
+    const SplitTotals<Totals> bySet = evaluateMaps<Totals>(
+        loadIpaSplit(options.split), maps, [&](const std::string& map) { return evaluate(map, options, classifier); });
+    const Totals& totals = bySet.all;
     const auto n = double(std::max<std::size_t>(totals.maps, 1));
     std::printf("# scans=%zu mapping scans/s=%.0f\n", totals.scans,
                 double(totals.scans) / std::max(totals.mappingSeconds, 1e-9));
@@ -296,8 +291,7 @@ int main(int argc, char** argv) {
                                  {"recall_pooled", ratio(t.roomOverlap, t.roomPixels)},
                                  {"precision_pooled", ratio(t.segmentOverlap, t.segmentPixels)}};
     };
-    std::printf("%s\n", splitFiguresLine("rooms_split", bySet[0].maps, figures(bySet[0]), bySet[1].maps,
-                                         figures(bySet[1])).c_str());
+    std::printf("%s\n", splitFiguresLine("rooms_split", bySet, figures).c_str());
     std::printf("rooms: maps=%zu recall_mean=%.3f precision_mean=%.3f recall_pooled=%.3f precision_pooled=%.3f\n",
                 totals.maps, totals.recallMean(), totals.precisionMean(),
                 ratio(totals.roomOverlap, totals.roomPixels), ratio(totals.segmentOverlap, totals.segmentPixels));

@@ -1,5 +1,6 @@
 // Tests the IPA tuning/check split: the shipped file holds each of the ten benchmark maps in
-// exactly one set, loading is strict, and the per-set figure line prints n/a for an empty set.
+// exactly one set, loading is strict, maps are pooled by set, and the per-set figure line prints
+// n/a for an empty set.
 #include "tests/eval/split/IpaSplit.h"
 
 #include <cppunit/extensions/HelperMacros.h>
@@ -13,6 +14,8 @@ class IpaSplitTest : public CppUnit::TestFixture {
   CPPUNIT_TEST(shippedSplitHoldsEveryBenchmarkMapOnce);
   CPPUNIT_TEST(mapsAreNamedWithOrWithoutFurniture);
   CPPUNIT_TEST(loadingIsStrict);
+  CPPUNIT_TEST(mapsArePooledBySet);
+  CPPUNIT_TEST(unknownMapFailsBeforeAnyEvaluation);
   CPPUNIT_TEST(figureLinePrintsBothSets);
   CPPUNIT_TEST_SUITE_END();
 
@@ -43,6 +46,29 @@ class IpaSplitTest : public CppUnit::TestFixture {
     CPPUNIT_ASSERT_THROW(parseIpaSplit("tuning: [a, b]\ncheck: [b]\n"), ConfigError);
     CPPUNIT_ASSERT_THROW(parseIpaSplit("tuning: a\ncheck: [b]\n"), ConfigError);
     CPPUNIT_ASSERT_THROW(loadIpaSplit("no/such/split.yaml"), FileError);
+  }
+
+  struct Count {
+    int n = 0;
+    void add(const Count& o) { n += o.n; }
+  };
+
+  void mapsArePooledBySet() {
+    const IpaSplit split({"a", "c"}, {"b"});
+    const SplitTotals<Count> totals = evaluateMaps<Count>(split, {"x/a.png", "b.png", "c_furnitures.png"},
+                                                          [](const std::string& map) { return Count{map == "b.png" ? 10 : 1}; });
+    CPPUNIT_ASSERT_EQUAL(12, totals.all.n);
+    CPPUNIT_ASSERT_EQUAL(2, totals.tuning.n);
+    CPPUNIT_ASSERT_EQUAL(10, totals.check.n);
+    CPPUNIT_ASSERT_EQUAL(std::size_t{2}, totals.tuningMaps);
+    CPPUNIT_ASSERT_EQUAL(std::size_t{1}, totals.checkMaps);
+  }
+
+  void unknownMapFailsBeforeAnyEvaluation() {
+    int evaluated = 0;
+    const auto evaluate = [&](const std::string&) { return Count{++evaluated}; };
+    CPPUNIT_ASSERT_THROW(evaluateMaps<Count>(IpaSplit({"a"}, {"b"}), {"a.png", "z.png"}, evaluate), ConfigError);
+    CPPUNIT_ASSERT_EQUAL(0, evaluated);
   }
 
   void figureLinePrintsBothSets() {
