@@ -123,7 +123,8 @@ void printSummary(const SplitTotals<Totals>& totals, std::size_t maps) {
               "detected with IoU too small=%zu\n",
               t.truthObjects - t.matches, e.missedUnseen, e.missedUndetected, e.missedPoorFit);
   const auto figures = [](const Totals& s) {
-    return std::vector<Figure>{{"precision", ratio(s.matches, s.detections)}, {"recall", ratio(s.matches, s.truthObjects)}};
+    return std::vector<Figure>{{"precision", ratio(s.matches, s.detections)},
+                               {"recall", ratio(s.matches, s.truthObjects)}};
   };
   std::printf("%s\n", splitFiguresLine("objects2d_split", totals, figures).c_str());
   std::printf("objects2d: maps=%zu precision=%.3f recall=%.3f\n", maps, ratio(t.matches, t.detections),

@@ -55,8 +55,9 @@ class IpaSplitTest : public CppUnit::TestFixture {
 
   void mapsArePooledBySet() {
     const IpaSplit split({"a", "c"}, {"b"});
-    const SplitTotals<Count> totals = evaluateMaps<Count>(split, {"x/a.png", "b.png", "c_furnitures.png"},
-                                                          [](const std::string& map) { return Count{map == "b.png" ? 10 : 1}; });
+    const auto evaluate = [](const std::string& map) { return Count{map == "b.png" ? 10 : 1}; };
+    const SplitTotals<Count> totals =
+        evaluateMaps<Count>(split, {"x/a.png", "b.png", "c_furnitures.png"}, evaluate);
     CPPUNIT_ASSERT_EQUAL(12, totals.all.n);
     CPPUNIT_ASSERT_EQUAL(2, totals.tuning.n);
     CPPUNIT_ASSERT_EQUAL(10, totals.check.n);
