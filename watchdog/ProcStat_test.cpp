@@ -1,11 +1,12 @@
 // Tests /proc/<pid>/stat reading: start time identifies a process, odd command names parse,
 // zombies and missing processes are not alive.
 #include <cppunit/extensions/HelperMacros.h>
+#include <time.h>
 #include <unistd.h>
 
+#include <cstdint>
 #include <filesystem>
 #include <limits>
-#include <thread>
 
 #include "watchdog/ChildProcess.h"
 #include "watchdog/ProcStat.h"
@@ -17,6 +18,19 @@ using rgnav::ChildProcess;
 using rgnav::readProcStat;
 using rgnav::testing::ProcessGuard;
 using rgnav::testing::TempDir;
+
+namespace {
+
+// The clock /proc/<pid>/stat counts start times in (since Linux 5.3: boot time, in clock ticks).
+std::uint64_t ticksSinceBoot() {
+  timespec now{};
+  clock_gettime(CLOCK_BOOTTIME, &now);
+  const auto ticksPerSecond = static_cast<std::uint64_t>(sysconf(_SC_CLK_TCK));
+  return static_cast<std::uint64_t>(now.tv_sec) * ticksPerSecond +
+         static_cast<std::uint64_t>(now.tv_nsec) * ticksPerSecond / 1000000000u;
+}
+
+}  // namespace
 
 class ProcStatTest : public CppUnit::TestFixture {
   CPPUNIT_TEST_SUITE(ProcStatTest);
@@ -45,8 +59,8 @@ class ProcStatTest : public CppUnit::TestFixture {
     ProcessGuard firstGuard(first.pid(), first.startTime());
     CPPUNIT_ASSERT_EQUAL(first.startTime(), readProcStat(first.pid())->startTime);
     CPPUNIT_ASSERT_EQUAL(first.startTime(), readProcStat(first.pid())->startTime);
-    // Start times count clock ticks: let two ticks pass so the next process cannot share one.
-    std::this_thread::sleep_for(std::chrono::milliseconds(2 * 1000 / sysconf(_SC_CLK_TCK) + 1));
+    // Start times count clock ticks since boot: wait for two more so the next process cannot share one.
+    rgnav::testing::waitUntil([&] { return ticksSinceBoot() >= first.startTime() + 2; }, "two clock ticks to pass");
     ChildProcess second = startSleep();
     ProcessGuard secondGuard(second.pid(), second.startTime());
     CPPUNIT_ASSERT(first.startTime() < second.startTime());

@@ -5,7 +5,10 @@
 //                     that scan marshals to, in the same run, same machine
 //   restart_p95_s     SIGKILL of the playback server until the client library gets an answer
 //   hang_detect_s     worst time from SIGSTOP until the watchdog declares the module hung
-// Last line: middleware: ping_us=… scan_fetch_ratio=… restart_p95_s=… hang_detect_s=…
+//   restarts, hangs   SIGKILL restarts and SIGSTOP hangs timed (as many as asked for)
+//   scan_bytes        what one scan marshals to (the size the ratio compares at)
+// Last line: middleware: ping_us=… scan_fetch_ratio=… restart_p95_s=… hang_detect_s=… restarts=…
+//   hangs=… scan_bytes=…
 #include <omniORB4/CORBA.h>
 #include <sched.h>
 #include <signal.h>
@@ -15,12 +18,14 @@
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
+#include <stdexcept>
 #include <thread>
 
 #include "Echo.hh"
 #include "clientlibs/common/ClientOrb.h"
 #include "clientlibs/common/convert.h"
 #include "clientlibs/laser/LaserClient.h"
+#include "tests/support/WaitUntil.h"
 #include "tests/support/cluster/Interruption.h"
 #include "tests/support/cluster/TestCluster.h"
 #include "watchdog/Spawn.h"
@@ -100,15 +105,17 @@ int main(int argc, char** argv) {
         ("corbaloc::127.0.0.1:" + std::to_string(echoPort) + "/Echo").c_str());
     RGNavBench::Echo_var echo = RGNavBench::Echo::_narrow(echoObj);
     omniORB::setClientCallTimeout(echo, static_cast<CORBA::ULong>(settings.callTimeout.count()));
-    for (int attempt = 0;; ++attempt) {  // the echo server may still be starting
-      try {
-        RGNavBench::Bytes_var warm = echo->fetch(bytes);
-        break;
-      } catch (const CORBA::TRANSIENT&) {
-        if (attempt > 500) throw;
-        std::this_thread::sleep_for(std::chrono::milliseconds(10));
-      }
-    }
+    const bool echoAnswers = pollUntil(  // the echo server may still be starting
+        [&] {
+          try {
+            RGNavBench::Bytes_var warm = echo->fetch(bytes);
+            return true;
+          } catch (const CORBA::TRANSIENT&) {
+            return false;
+          }
+        },
+        std::chrono::seconds(20), std::chrono::milliseconds(10));
+    if (!echoAnswers) throw std::runtime_error("the echo server did not answer");
 
     cpu_set_t allCpus, cpu0;
     sched_getaffinity(0, sizeof allCpus, &allCpus);
@@ -154,8 +161,10 @@ int main(int argc, char** argv) {
                 median(fetchTimes) * 1e6, bytes, median(echoTimes) * 1e6);
     std::printf("restarts: %d, median %.3f s, max %.3f s; hangs: %d, median %.3f s\n", restarts,
                 median(restartTimes), percentile(restartTimes, 1.0), hangs, median(hangTimes));
-    std::printf("middleware: ping_us=%.1f scan_fetch_ratio=%.2f restart_p95_s=%.3f hang_detect_s=%.3f\n",
-                median(pingTimes) * 1e6, ratio, percentile(restartTimes, 0.95), percentile(hangTimes, 1.0));
+    std::printf("middleware: ping_us=%.1f scan_fetch_ratio=%.2f restart_p95_s=%.3f hang_detect_s=%.3f restarts=%zu "
+                "hangs=%zu scan_bytes=%u\n",
+                median(pingTimes) * 1e6, ratio, percentile(restartTimes, 0.95), percentile(hangTimes, 1.0),
+                restartTimes.size(), hangTimes.size(), static_cast<unsigned>(bytes));
     return 0;
   } catch (const po::error& e) {
     std::cerr << "rgnav-bench-middleware: " << e.what() << "\n" << desc << std::endl;

@@ -4,10 +4,10 @@
 // that resumes from the checkpoint with the very same events and gateways.
 #include <cppunit/extensions/HelperMacros.h>
 
+#include <chrono>
 #include <cstdlib>
 #include <filesystem>
 #include <set>
-#include <thread>
 
 #include "clientlibs/gatewaydetection/GatewayDetectionClient.h"
 #include "tests/integration/IntegrationHelpers.h"
@@ -19,13 +19,14 @@ namespace {
 
 std::vector<GatewayEvent> allEvents(GatewayDetectionClient& detection) {
   std::vector<GatewayEvent> events;
-  for (int call = 0; call < 20000; ++call) {
-    GatewayEventBatch batch = detection.eventsSince(events.empty() ? 0 : events.back().id, 50);
-    for (GatewayEvent& e : batch.events) events.push_back(std::move(e));
-    if (batch.events.empty() && batch.endOfData) return events;
-    if (batch.events.empty()) std::this_thread::sleep_for(std::chrono::milliseconds(5));
-  }
-  throw std::runtime_error("the gateway events did not end");
+  waitUntil(
+      [&] {
+        GatewayEventBatch batch = detection.eventsSince(events.empty() ? 0 : events.back().id, 50);
+        for (GatewayEvent& e : batch.events) events.push_back(std::move(e));
+        return batch.events.empty() && batch.endOfData;
+      },
+      "the gateway events to end", std::chrono::seconds(120));
+  return events;
 }
 
 }  // namespace

@@ -78,6 +78,7 @@ class InterruptedRunIntegrationTest : public CppUnit::TestFixture {
           return cluster && processesNaming(cluster->string() + "/").size() >= 2;
         },
         "the server set to start", std::chrono::seconds(120), std::chrono::milliseconds(50));
+    // A second of mapping is the scenario: the Ctrl-C lands in a running chain, not in its start.
     std::this_thread::sleep_for(std::chrono::seconds(1));
 
     CPPUNIT_ASSERT_EQUAL(0, ::kill(child.pid, SIGINT));

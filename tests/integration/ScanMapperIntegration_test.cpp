@@ -3,9 +3,9 @@
 // resumes from the checkpoint with the very same poses.
 #include <cppunit/extensions/HelperMacros.h>
 
+#include <chrono>
 #include <cmath>
 #include <filesystem>
-#include <thread>
 
 #include "clientlibs/scanmapper/ScanMapperClient.h"
 #include "tests/integration/IntegrationHelpers.h"
@@ -34,16 +34,17 @@ class ScanMapperIntegrationTest : public CppUnit::TestFixture {
     ScanMapperClient mapper(cluster.clientSettings());
     DataId last = 0;
     std::size_t keyframes = 0;
-    for (int call = 0; call < 10000; ++call) {
-      const CorrectedBatch batch = mapper.correctedSince(last, 100);
-      for (const CorrectedScan& s : batch.scans) {
-        CPPUNIT_ASSERT_EQUAL(last + 1, s.scan.id);
-        last = s.scan.id;
-        keyframes += s.keyframe;
-      }
-      if (batch.scans.empty() && batch.endOfData) break;
-      if (batch.scans.empty()) std::this_thread::sleep_for(std::chrono::milliseconds(5));
-    }
+    waitUntil(
+        [&] {
+          const CorrectedBatch batch = mapper.correctedSince(last, 100);
+          for (const CorrectedScan& s : batch.scans) {
+            CPPUNIT_ASSERT_EQUAL(last + 1, s.scan.id);
+            last = s.scan.id;
+            keyframes += s.keyframe;
+          }
+          return batch.scans.empty() && batch.endOfData;
+        },
+        "the corrected scans to end", std::chrono::seconds(120));
     CPPUNIT_ASSERT_EQUAL(DataId(910), last);
     CPPUNIT_ASSERT(keyframes > 100);
 

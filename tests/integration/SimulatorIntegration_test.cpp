@@ -4,8 +4,10 @@
 // while commanded and stops when the commands lapse.
 #include <cppunit/extensions/HelperMacros.h>
 
+#include <chrono>
 #include <cmath>
 #include <limits>
+#include <optional>
 
 #include <thread>
 
@@ -84,16 +86,27 @@ class SimulatorIntegrationTest : public CppUnit::TestFixture {
       return batch.records.back().pose;
     };
     const Pose2D before = latestPose();
-    for (int i = 0; i < 20; ++i) {  // 1 s of commands at 20 Hz
+    for (int i = 0; i < 20; ++i) {  // 1 s of commands at 20 Hz: the pace is the scenario
       base.setVelocity(0.0, 0.5);
       std::this_thread::sleep_for(std::chrono::milliseconds(50));
     }
+    const auto lastCommand = std::chrono::steady_clock::now();
     const Pose2D turned = latestPose();
     CPPUNIT_ASSERT(std::abs(normalizeAngle(turned.theta - before.theta)) > 0.1);
-    std::this_thread::sleep_for(std::chrono::milliseconds(1500));  // commands lapse after 0.5 s
-    const Pose2D settled = latestPose();
+    // Commands lapse after 0.5 s: then the robot comes to rest (two readings 0.25 s apart agree).
+    std::optional<Pose2D> settled;
+    waitUntil(
+        [&] {
+          const Pose2D now = latestPose();
+          const bool lapsed = std::chrono::steady_clock::now() - lastCommand > std::chrono::milliseconds(500);
+          const bool still = lapsed && settled && std::abs(normalizeAngle(now.theta - settled->theta)) < 1e-9;
+          settled = now;
+          return still;
+        },
+        "the robot to stop after its commands lapsed", std::chrono::seconds(10), std::chrono::milliseconds(250));
+    // Waiting out half a second more is the scenario: it proves the robot stays at rest.
     std::this_thread::sleep_for(std::chrono::milliseconds(500));
-    CPPUNIT_ASSERT_DOUBLES_EQUAL(settled.theta, latestPose().theta, 1e-9);
+    CPPUNIT_ASSERT_DOUBLES_EQUAL(settled->theta, latestPose().theta, 1e-9);
     CPPUNIT_ASSERT_THROW(base.setVelocity(NAN, 0.0), InvalidArgumentError);
   }
 };

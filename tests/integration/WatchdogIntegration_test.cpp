@@ -16,7 +16,8 @@ using namespace rgnav::testing;
 
 namespace {
 
-// Long enough for several heartbeats (100 ms) and restart backoffs (50 ms) to have happened.
+// Waiting out a time is the scenario here: it proves a stopped module is not started again. Long
+// enough for several heartbeats (100 ms) and restart backoffs (50 ms) to have happened.
 void settle() { std::this_thread::sleep_for(std::chrono::milliseconds(1000)); }
 
 ClusterModule playbackModule(const std::string& policy = "") {

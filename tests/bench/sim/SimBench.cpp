@@ -3,7 +3,8 @@
 // office_c (1683 x 965 px, the largest of the ten benchmark maps), tiled from the top-left
 // corner into a 2000 x 2000 canvas at 0.05 m per cell; sensor poses are random free cells with
 // random headings (seeded). Single thread.
-// Last line: sim: raycast_scans_per_s=…
+// Last line: sim: raycast_scans_per_s=… mean_range_m=… (the mean range of the beams that return: a
+// check of the scans, since the poses are seeded)
 #include <chrono>
 #include <cstdlib>
 #include <iostream>
@@ -90,16 +91,18 @@ int main(int argc, char** argv) {
     }
     const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     const double beams = double(poses.size()) * double(ranges.size());
+    const double meanRangeM = returns > 0 ? rangeSum / double(returns) : 0.0;
 
     std::cout << "map: " << mapPath << " (" << plan.cols << "x" << plan.rows << " px) tiled into "
               << kCanvasSize << "x" << kCanvasSize << " cells of " << kFloorPlanResolution << " m\n"
               << "scans: " << poses.size() << " x " << ranges.size() << " beams, max range " << config.maxRange
               << " m, random free poses (seed " << seed << "), one thread\n"
               << "leap table: " << setupSeconds << " s\n"
-              << "beams: mean range " << (returns > 0 ? rangeSum / double(returns) : 0.0) << " m, "
+              << "beams: mean range " << meanRangeM << " m, "
               << 100.0 * double(within20) / beams << " % end within 20 m, "
               << 100.0 * (1.0 - double(returns) / beams) << " % no return\n"
-              << "sim: raycast_scans_per_s=" << static_cast<long long>(double(poses.size()) / seconds) << std::endl;
+              << "sim: raycast_scans_per_s=" << static_cast<long long>(double(poses.size()) / seconds)
+              << " mean_range_m=" << meanRangeM << std::endl;
     return 0;
   } catch (const std::exception& e) {
     std::cerr << "rgnav-bench-sim: " << e.what() << std::endl;

@@ -5,7 +5,9 @@
 // matched to the ground-truth door lines by midpoint distance (DoorMatching.h), counting only
 // the lines DoorTruth.h accepts as doors. A second score keeps only what an RG map would hold
 // (thesis table 6.1): the gateways the robot traversed against the counted doors it crossed.
-// Prints a row per map and, last,
+// Prints a row per map, the same figures pooled over the tuning and over the check maps of the
+// IPA split (config/eval/ipa-split.yaml: doors_laser_split: … precision_tuning=… recall_check=…)
+// and, last,
 //   doors_laser: precision=… recall=…
 // pooled over all maps. --list-doors prints every GT line with its class and match,
 // --list-gateways every confirmed gateway with its outcome, --debug-dir writes a picture per
@@ -15,6 +17,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
+#include <vector>
 
 #include "core/config/ShippedConfig.h"
 #include "core/gateways/detection/GatewayDetectorConfigYaml.h"
@@ -24,6 +27,7 @@
 #include "tests/eval/doors/DoorMatching.h"
 #include "tests/eval/doors/DoorTruth.h"
 #include "tests/eval/doors/TourPassages.h"
+#include "tests/eval/split/IpaSplit.h"
 #include "tools/common/CommandLine.h"
 
 namespace po = boost::program_options;
@@ -38,6 +42,7 @@ struct Options {
   bool listDoors = false;
   bool listGateways = false;
   std::string debugDir;
+  std::string split = "config/eval/ipa-split.yaml";
 };
 
 struct Counts {
@@ -203,6 +208,7 @@ int main(int argc, char** argv) {
       ("list-doors", po::bool_switch(&options.listDoors), "print every ground-truth line with its class and match")
       ("list-gateways", po::bool_switch(&options.listGateways), "print every confirmed gateway with its outcome")
       ("debug-dir", po::value(&options.debugDir), "write <map>_doors.png here")
+      ("split", po::value(&options.split)->default_value(options.split), "the IPA maps' tuning/check split")
       ("seed", po::value(&options.setup.seed)->default_value(options.setup.seed), "simulation seed");
   po::positional_options_description positional;
   positional.add("map", -1);
@@ -211,8 +217,9 @@ int main(int argc, char** argv) {
     if (!options.debugDir.empty()) std::filesystem::create_directories(options.debugDir);
     options.rule.approachM = options.setup.detector.maxDistanceM;
     printHeader(options);
-    Counts total;
-    for (const std::string& map : maps) total.add(evaluate(map, options));
+    const SplitTotals<Counts> totals = evaluateMaps<Counts>(
+        loadIpaSplit(options.split), maps, [&](const std::string& map) { return evaluate(map, options); });
+    const Counts& total = totals.all;
     std::printf("# GT lines=%zu no-pair=%zu wide=%zu unreachable=%zu far=%zu counted=%zu; scans=%zu "
                 "single-scan hypotheses=%zu traversal events=%zu\n",
                 total.lines, total.notBetweenRooms, total.notNarrow, total.unreachable, total.notApproached,
@@ -221,6 +228,11 @@ int main(int argc, char** argv) {
                 total.traversed.doors, total.traversedGateways, total.traversed.matches,
                 ratio(total.traversed.matches, total.traversed.detections),
                 ratio(total.traversed.matches, total.traversed.doors));
+    const auto figures = [](const Counts& c) {
+      return std::vector<Figure>{{"precision", ratio(c.all.matches, c.all.detections)},
+                                 {"recall", ratio(c.all.matches, c.all.doors)}};
+    };
+    std::printf("%s\n", splitFiguresLine("doors_laser_split", totals, figures).c_str());
     std::printf("doors_laser: precision=%.3f recall=%.3f\n", ratio(total.all.matches, total.all.detections),
                 ratio(total.all.matches, total.all.doors));
     return 0;

@@ -3,7 +3,9 @@
 // those no place the robot can reach sees (Visibility). The robot drives the room tour of
 // rgnav-sim-tour in the simulator; its scans, at their TRUE poses, go through the detection
 // pipeline (ObjectDetection.h); detections are matched to the blobs by grid IoU (Matching.h).
-// Prints a row per map, where the errors come from (ErrorBreakdown) and, last,
+// Prints a row per map, where the errors come from (ErrorBreakdown), the figures pooled over the
+// tuning and over the check maps of the IPA split (config/eval/ipa-split.yaml: objects2d_split: …
+// precision_tuning=… recall_check=…) and, last,
 //   objects2d: maps=… precision=… recall=…
 // pooled over all maps. --debug-dir writes a PNG per map (DebugImage.h). Exit code 0 when every
 // map was evaluated, whatever the figures.
@@ -13,6 +15,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
+#include <vector>
 
 #include "core/sim/LoadedWorld.h"
 #include "core/sim/world/FloorPlan.h"
@@ -22,6 +25,7 @@
 #include "tests/eval/objects/ObjectDetection.h"
 #include "tests/eval/objects/TourScans.h"
 #include "tests/eval/objects/Visibility.h"
+#include "tests/eval/split/IpaSplit.h"
 #include "tools/common/CommandLine.h"
 
 namespace po = boost::program_options;
@@ -34,13 +38,28 @@ struct Options {
   double minIoU = 0.5;
   std::uint64_t seed = 1;
   std::string debugDir;
+  std::string split = "config/eval/ipa-split.yaml";
 };
 
-// Pooled counts over the maps.
+// Counts of one map, or pooled over maps.
 struct Totals {
   std::size_t blobs = 0, specks = 0, invisible = 0, truthObjects = 0, detections = 0, matches = 0;
   std::array<std::size_t, kDetectionKinds> detectionsByKind{}, matchesByKind{};
   ErrorBreakdown errors;
+
+  void add(const Totals& o) {
+    blobs += o.blobs;
+    specks += o.specks;
+    invisible += o.invisible;
+    truthObjects += o.truthObjects;
+    detections += o.detections;
+    matches += o.matches;
+    for (std::size_t k = 0; k < kDetectionKinds; ++k) {
+      detectionsByKind[k] += o.detectionsByKind[k];
+      matchesByKind[k] += o.matchesByKind[k];
+    }
+    errors += o.errors;
+  }
 };
 
 double ratio(std::size_t a, std::size_t b) { return b == 0 ? 0.0 : static_cast<double>(a) / static_cast<double>(b); }
@@ -50,7 +69,8 @@ std::size_t countExcluded(const FurnitureTruth& truth, Exclusion why) {
                                                 [&](const FurnitureBlob& b) { return b.exclusion == why; }));
 }
 
-void evaluate(const std::string& map, const Options& options, Totals& totals) {
+// The counts of one map.
+Totals evaluate(const std::string& map, const Options& options) {
   const auto started = std::chrono::steady_clock::now();
   const LoadedWorld world = loadWorld(map);
   const IpaFiles files = ipaFilesOf(map);
@@ -74,20 +94,23 @@ void evaluate(const std::string& map, const Options& options, Totals& totals) {
               m.detectionsByKind[0], m.detectionsByKind[1], m.detectionsByKind[2], m.detections, m.matches,
               ratio(m.matches, m.detections), ratio(m.matches, m.truthObjects), seconds);
   std::fflush(stdout);
-  totals.blobs += truth.blobs.size();
-  totals.specks += specks;
-  totals.invisible += invisible;
-  totals.truthObjects += m.truthObjects;
-  totals.detections += m.detections;
-  totals.matches += m.matches;
+  Totals counts;
+  counts.blobs = truth.blobs.size();
+  counts.specks = specks;
+  counts.invisible = invisible;
+  counts.truthObjects = m.truthObjects;
+  counts.detections = m.detections;
+  counts.matches = m.matches;
   for (std::size_t k = 0; k < kDetectionKinds; ++k) {
-    totals.detectionsByKind[k] += m.detectionsByKind[k];
-    totals.matchesByKind[k] += m.matchesByKind[k];
+    counts.detectionsByKind[k] = m.detectionsByKind[k];
+    counts.matchesByKind[k] = m.matchesByKind[k];
   }
-  totals.errors += errors;
+  counts.errors = errors;
+  return counts;
 }
 
-void printSummary(const Totals& t, std::size_t maps) {
+void printSummary(const SplitTotals<Totals>& totals, std::size_t maps) {
+  const Totals& t = totals.all;
   for (std::size_t k = 0; k < kDetectionKinds; ++k)
     std::printf("# %-9s detections=%zu matches=%zu precision=%.3f\n", kindName(static_cast<DetectionKind>(k)).c_str(),
                 t.detectionsByKind[k], t.matchesByKind[k], ratio(t.matchesByKind[k], t.detectionsByKind[k]));
@@ -99,6 +122,11 @@ void printSummary(const Totals& t, std::size_t maps) {
   std::printf("# missed GT objects=%zu: never hit by a beam of the tour=%zu, hit but not detected=%zu, "
               "detected with IoU too small=%zu\n",
               t.truthObjects - t.matches, e.missedUnseen, e.missedUndetected, e.missedPoorFit);
+  const auto figures = [](const Totals& s) {
+    return std::vector<Figure>{{"precision", ratio(s.matches, s.detections)},
+                               {"recall", ratio(s.matches, s.truthObjects)}};
+  };
+  std::printf("%s\n", splitFiguresLine("objects2d_split", totals, figures).c_str());
   std::printf("objects2d: maps=%zu precision=%.3f recall=%.3f\n", maps, ratio(t.matches, t.detections),
               ratio(t.matches, t.truthObjects));
 }
@@ -128,16 +156,17 @@ int main(int argc, char** argv) {
       ("min-blob-cells", po::value(&options.minBlobCells)->default_value(options.minBlobCells),
        "smaller ground-truth blobs are specks (not counted)")
       ("min-iou", po::value(&options.minIoU)->default_value(options.minIoU), "IoU for a match")
-      ("seed", po::value(&options.seed)->default_value(options.seed), "simulation seed");
+      ("seed", po::value(&options.seed)->default_value(options.seed), "simulation seed")
+      ("split", po::value(&options.split)->default_value(options.split), "the IPA maps' tuning/check split");
   po::positional_options_description positional;
   positional.add("map", -1);
   try {
     if (!parseCommandLine(argc, argv, desc, positional)) return 0;
     if (!options.debugDir.empty()) std::filesystem::create_directories(options.debugDir);
     printHeader(options);
-    Totals totals;
-    for (const std::string& map : maps) evaluate(map, options, totals);
-    printSummary(totals, maps.size());
+    printSummary(evaluateMaps<Totals>(loadIpaSplit(options.split), maps,
+                                      [&](const std::string& map) { return evaluate(map, options); }),
+                 maps.size());
     return 0;
   } catch (const po::error& e) {
     std::cerr << "rgnav-eval-objects: " << e.what() << "\n" << desc << std::endl;

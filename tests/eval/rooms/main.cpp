@@ -7,7 +7,9 @@
 // and scored against the ground-truth rooms with the benchmark's metric (RoomScoring.h). Prints a
 // row per map with a line of where it loses (ScoreBreakdown.h) and, last,
 //   rooms: maps=… recall_mean=… precision_mean=… recall_pooled=… precision_pooled=…
-// where the means are over the maps' means and the pooled figures sum pixels over all maps. A
+// where the means are over the maps' means and the pooled figures sum pixels over all maps; the
+// line before gives the same figures over the tuning and over the check maps of the IPA split
+// (config/eval/ipa-split.yaml: rooms_split: … recall_mean_tuning=… recall_mean_check=…). A
 // picture per map goes to --out (DebugImage.h; --region-pictures: one per region too); --list
 // prints every room, region and gateway (Listing.h). A line per map and one before the last score
 // the regions' 2D objects against the furniture (ObjectScoring.h). Trained HMMs (--models, if the
@@ -18,11 +20,13 @@
 // own omniNames and watchdog on free loopback ports), each module with its defaults; without it
 // the same chain runs in process (MappingRun.h), which is faster, takes the detector and kernel
 // options above and knows which scans each region holds (--list, --region-pictures).
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
 #include <sstream>
+#include <vector>
 
 #include "core/gateways/classify/HmmModelFile.h"
 #include "core/sim/LoadedWorld.h"
@@ -36,6 +40,7 @@
 #include "tests/eval/rooms/RoomScoring.h"
 #include "tests/eval/rooms/ScoreBreakdown.h"
 #include "tests/eval/rooms/ServerSetRun.h"
+#include "tests/eval/split/IpaSplit.h"
 #include "tests/support/cluster/Interruption.h"
 #include "tools/common/CommandLine.h"
 
@@ -54,6 +59,7 @@ struct Options {
   bool serverSet = false;
   double growM = 0.3;
   double maxHoleM2 = 2.0;
+  std::string split = "config/eval/ipa-split.yaml";
 };
 
 // Whether an option that only the in-process run takes differs from its default (`shipped`: the
@@ -85,6 +91,26 @@ struct Totals {
   double recallMeans = 0.0, precisionMeans = 0.0, ceilingMeans = 0.0, furnitureMeans = 0.0, mappingSeconds = 0.0;
   std::size_t roomOverlap = 0, roomPixels = 0, segmentOverlap = 0, segmentPixels = 0;
   ObjectScore objects;
+
+  void add(const Totals& o) {
+    maps += o.maps;
+    scans += o.scans;
+    recallMeans += o.recallMeans;
+    precisionMeans += o.precisionMeans;
+    ceilingMeans += o.ceilingMeans;
+    furnitureMeans += o.furnitureMeans;
+    mappingSeconds += o.mappingSeconds;
+    roomOverlap += o.roomOverlap;
+    roomPixels += o.roomPixels;
+    segmentOverlap += o.segmentOverlap;
+    segmentPixels += o.segmentPixels;
+    objects.objects += o.objects.objects;
+    objects.onFurniture += o.objects.onFurniture;
+    objects.blobs += o.objects.blobs;
+    objects.blobsFound += o.objects.blobsFound;
+  }
+  double recallMean() const { return recallMeans / double(std::max<std::size_t>(maps, 1)); }
+  double precisionMean() const { return precisionMeans / double(std::max<std::size_t>(maps, 1)); }
 };
 
 // Furniture blobs smaller than this (20 cells, 0.05 m2: table and chair legs) are specks for the
@@ -100,8 +126,8 @@ std::string shown(double value) {
   return text.str();
 }
 
-void evaluate(const std::string& mapPath, const Options& options, const std::optional<HmmClassifier>& classifier,
-              Totals& totals) {
+// The figures of one map.
+Totals evaluate(const std::string& mapPath, const Options& options, const std::optional<HmmClassifier>& classifier) {
   const auto started = std::chrono::steady_clock::now();
   const LoadedWorld world = loadWorld(mapPath);
   const IpaFiles files = ipaFilesOf(mapPath);
@@ -140,21 +166,20 @@ void evaluate(const std::string& mapPath, const Options& options, const std::opt
               objects.blobsFound, objects.blobs);
   if (options.list) printListing(score, *world.truth, run);
   std::fflush(stdout);
-  ++totals.maps;
-  totals.scans += scans;
-  totals.mappingSeconds += run.mappingSeconds;
-  totals.recallMeans += score.recallMean();
-  totals.ceilingMeans += losses.ceilingMean;
-  totals.furnitureMeans += furniture;
-  totals.precisionMeans += score.precisionMean();
-  totals.roomOverlap += score.roomOverlapSum();
-  totals.roomPixels += score.roomPixelSum();
-  totals.segmentOverlap += score.segmentOverlapSum();
-  totals.segmentPixels += score.segmentPixelSum();
-  totals.objects.objects += objects.objects;
-  totals.objects.onFurniture += objects.onFurniture;
-  totals.objects.blobs += objects.blobs;
-  totals.objects.blobsFound += objects.blobsFound;
+  Totals one;
+  one.maps = 1;
+  one.scans = scans;
+  one.mappingSeconds = run.mappingSeconds;
+  one.recallMeans = score.recallMean();
+  one.ceilingMeans = losses.ceilingMean;
+  one.furnitureMeans = furniture;
+  one.precisionMeans = score.precisionMean();
+  one.roomOverlap = score.roomOverlapSum();
+  one.roomPixels = score.roomPixelSum();
+  one.segmentOverlap = score.segmentOverlapSum();
+  one.segmentPixels = score.segmentPixelSum();
+  one.objects = objects;
+  return one;
 }
 
 void printHeader(bool hallways, bool truePoses, bool serverSet, double growM, double maxHoleM2) {
@@ -234,7 +259,8 @@ int main(int argc, char** argv) {
       ("true-poses", po::bool_switch(&options.setup.truePoses),
        "the kernel gets the true pose of every scan instead of SLAM's (what SLAM errors cost)")
       ("max-tour-s", po::value(&options.setup.maxTourSeconds)->default_value(options.setup.maxTourSeconds, shown(options.setup.maxTourSeconds)),
-       "end each tour after this many simulated seconds (smoke runs)");
+       "end each tour after this many simulated seconds (smoke runs)")
+      ("split", po::value(&options.split)->default_value(options.split), "the IPA maps' tuning/check split");
   po::positional_options_description positional;
   positional.add("map", -1);
   try {
@@ -252,8 +278,9 @@ int main(int argc, char** argv) {
                         "--true-poses, --max-tour-s, --list and --region-pictures need the in-process run");
     if (options.serverSet) testing::catchInterruptions();  // so that a stopped run removes its server set's directory
     printHeader(classifier.has_value(), options.setup.truePoses, options.serverSet, options.growM, options.maxHoleM2);
-    Totals totals;
-    for (const std::string& map : maps) evaluate(map, options, classifier, totals);
+    const SplitTotals<Totals> bySet = evaluateMaps<Totals>(
+        loadIpaSplit(options.split), maps, [&](const std::string& map) { return evaluate(map, options, classifier); });
+    const Totals& totals = bySet.all;
     const auto n = double(std::max<std::size_t>(totals.maps, 1));
     std::printf("# scans=%zu mapping scans/s=%.0f\n", totals.scans,
                 double(totals.scans) / std::max(totals.mappingSeconds, 1e-9));
@@ -266,8 +293,15 @@ int main(int argc, char** argv) {
                 "cells, ObjectScoring.h)\n", totals.objects.objects,
                 ratio(totals.objects.onFurniture, totals.objects.objects),
                 ratio(totals.objects.blobsFound, totals.objects.blobs), kMinFurnitureCells);
+    const auto figures = [](const Totals& t) {
+      return std::vector<Figure>{{"recall_mean", t.recallMean()},
+                                 {"precision_mean", t.precisionMean()},
+                                 {"recall_pooled", ratio(t.roomOverlap, t.roomPixels)},
+                                 {"precision_pooled", ratio(t.segmentOverlap, t.segmentPixels)}};
+    };
+    std::printf("%s\n", splitFiguresLine("rooms_split", bySet, figures).c_str());
     std::printf("rooms: maps=%zu recall_mean=%.3f precision_mean=%.3f recall_pooled=%.3f precision_pooled=%.3f\n",
-                totals.maps, totals.recallMeans / n, totals.precisionMeans / n,
+                totals.maps, totals.recallMean(), totals.precisionMean(),
                 ratio(totals.roomOverlap, totals.roomPixels), ratio(totals.segmentOverlap, totals.segmentPixels));
     return 0;
   } catch (const po::error& e) {

@@ -13,9 +13,9 @@
 #include <mutex>
 #include <set>
 #include <stdexcept>
-#include <thread>
 
 #include "core/config/ShippedConfig.h"
+#include "tests/support/WaitUntil.h"
 #include "tests/support/cluster/Interruption.h"
 #include "watchdog/ProcStat.h"
 #include "watchdog/Spawn.h"
@@ -140,16 +140,18 @@ ModuleProcessInfo TestCluster::describe(const std::string& name) {
 ModuleProcessInfo TestCluster::waitFor(const std::string& name,
                                        const std::function<bool(const ModuleProcessInfo&)>& pred,
                                        const std::string& what, std::chrono::milliseconds limit) {
-  const auto giveUp = std::chrono::steady_clock::now() + limit;
-  for (;;) {
-    throwIfInterrupted();
-    ModuleProcessInfo info = describe(name);
-    if (pred(info)) return info;
-    if (std::chrono::steady_clock::now() > giveUp)
-      throw std::runtime_error("timed out waiting for " + name + " to be " + what + " (state " +
-                               toString(info.state) + ", last event: " + info.lastEvent + ")");
-    std::this_thread::sleep_for(std::chrono::milliseconds(5));
-  }
+  ModuleProcessInfo info;
+  const bool reached = pollUntil(
+      [&] {
+        throwIfInterrupted();
+        info = describe(name);
+        return pred(info);
+      },
+      limit);
+  if (!reached)
+    throw std::runtime_error("timed out waiting for " + name + " to be " + what + " (state " + toString(info.state) +
+                             ", last event: " + info.lastEvent + ")");
+  return info;
 }
 
 void TestCluster::teardown() {
@@ -160,14 +162,11 @@ void TestCluster::teardown() {
       // The watchdog no longer answers; the PIDs seen so far are all we can clean up.
     }
     ::kill(watchdogPid_, SIGTERM);
-    const auto giveUp = std::chrono::steady_clock::now() + std::chrono::seconds(20);
-    while (::waitpid(watchdogPid_, nullptr, WNOHANG) == 0) {
-      if (std::chrono::steady_clock::now() > giveUp) {
-        ::kill(watchdogPid_, SIGKILL);
-        ::waitpid(watchdogPid_, nullptr, 0);
-        break;
-      }
-      std::this_thread::sleep_for(std::chrono::milliseconds(10));
+    const bool ended = pollUntil([&] { return ::waitpid(watchdogPid_, nullptr, WNOHANG) != 0; },
+                                 std::chrono::seconds(20), std::chrono::milliseconds(10));
+    if (!ended) {
+      ::kill(watchdogPid_, SIGKILL);
+      ::waitpid(watchdogPid_, nullptr, 0);
     }
   }
   for (const auto& [pid, startTime] : seen_) {
