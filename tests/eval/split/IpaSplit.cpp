@@ -11,7 +11,7 @@
 #include <sstream>
 
 #include "core/common/Errors.h"
-#include "core/supervision/ConfigNode.h"
+#include "core/config/ConfigNode.h"
 
 namespace rgnav {
 
