@@ -6,16 +6,17 @@
 
 #include "GatewayDetection.hh"
 #include "clientlibs/common/ModuleClient.h"
-#include "core/gateways/detection/GatewayEventBatch.h"
+#include "core/rgmap/feed/MappingInputs.h"
 
 namespace rgnav {
 
-class GatewayDetectionClient : public ModuleClientOf<RGNav::GatewayDetection> {
+// It is the kernel's event input (MappingInputs.h) in the kernel module.
+class GatewayDetectionClient : public ModuleClientOf<RGNav::GatewayDetection>, public GatewayEventInput {
  public:
   explicit GatewayDetectionClient(ClientSettings settings = ClientSettings::fromEnvironment(),
                                   std::string objectName = "GatewayDetection");
 
-  GatewayEventBatch eventsSince(GatewayEventId afterId, std::uint32_t maxCount);
+  GatewayEventBatch eventsSince(GatewayEventId afterId, std::uint32_t maxCount) override;
   std::vector<GatewayRecord> gateways();
   GatewayRecord gateway(GatewayId id);
   DataId lastProcessedScan();

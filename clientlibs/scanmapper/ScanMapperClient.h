@@ -5,24 +5,25 @@
 
 #include "ScanMapper.hh"
 #include "clientlibs/common/ModuleClient.h"
-#include "core/slam/CorrectedScans.h"
+#include "core/rgmap/feed/MappingInputs.h"
 
 namespace rgnav {
 
-class ScanMapperClient : public ModuleClientOf<RGNav::ScanMapper> {
+// It is the kernel's scan input (MappingInputs.h) in the kernel module.
+class ScanMapperClient : public ModuleClientOf<RGNav::ScanMapper>, public CorrectedScanInput {
  public:
   explicit ScanMapperClient(ClientSettings settings = ClientSettings::fromEnvironment(),
                             std::string objectName = "ScanMapper");
 
   DataId latestCorrectedId();
-  std::uint64_t revision();
-  CorrectedBatch correctedSince(DataId afterId, std::uint32_t maxCount);
-  std::vector<PoseUpdate> poses(DataId firstId, DataId lastId);
+  std::uint64_t revision() override;
+  CorrectedBatch correctedSince(DataId afterId, std::uint32_t maxCount) override;
+  std::vector<PoseUpdate> poses(DataId firstId, DataId lastId) override;
   // As the follower named by the settings' consumer, which has durably applied every revision up
   // to afterRevision (ScanMapper.idl).
-  std::vector<PoseRevisionInfo> revisionsSince(std::uint64_t afterRevision);
+  std::vector<PoseRevisionInfo> revisionsSince(std::uint64_t afterRevision) override;
   // NotAvailableError if the revision is no longer kept (ScanMapper.idl).
-  std::vector<PoseUpdate> revisedPoses(std::uint64_t revision, DataId firstId, DataId lastId);
+  std::vector<PoseUpdate> revisedPoses(std::uint64_t revision, DataId firstId, DataId lastId) override;
   Pose2D correctedPose(DataId scanId);
   Pose2D odomToMap(DataId scanId, const Pose2D& odometryPose);
 

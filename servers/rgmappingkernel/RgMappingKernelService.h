@@ -1,15 +1,12 @@
 // RgMappingKernelService: the RG Mapping Kernel module's work behind its servant (thesis 5.2):
 // follows the ScanMapper's corrected scans and pose revisions and the GatewayDetection module's
-// events by ID and feeds them to the kernel core in scan order - scan s with its pose as mapped,
-// then the events scan s caused (GatewayEvent::scanId); a revision the ScanMapper made while it
-// took in scan s revises the kernel's scans with that revision's poses just before scan s - and,
-// once the input ended, the ScanMapper's final poses. So the kernel's inputs, and the map, do not
-// depend on the modules' timing: the server set maps a log as the in-process chain does
-// (tests/eval/rooms MappingPipeline), also across restarts of either module (a revision a
-// restarted ScanMapper has not made again yet is waited for). Only a kernel that lags so far
-// that the ScanMapper no longer keeps a revision (SlamConfig graph.keptRevisions) or a scan (its
-// buffer) maps differently: it takes the latest poses instead and counts it (health
-// "pose_revisions_replaced"; revisions it never learned of: "pose_revisions_not_kept"). It tells
+// events by ID through their client libraries and feeds them to the kernel core in the order of
+// the mapping chain's contract (core/rgmap/feed/KernelFeed.h), as the in-process chain does
+// (tests/eval/rooms MappingPipeline). So the map does not depend on the modules' timing, also
+// across restarts of either module. Only a kernel that lags so far that the ScanMapper no longer
+// keeps a revision (SlamConfig graph.keptRevisions) or a scan (its buffer) maps differently: it
+// takes the latest poses instead and counts it (health "pose_revisions_replaced"; revisions it
+// never learned of: "pose_revisions_not_kept"). It tells
 // the ScanMapper which revision its last checkpoint holds, so that the ScanMapper keeps only the
 // revisions after it (RevisionFollowers.h). It checkpoints the map atomically after every batch
 // that changed its structure, after every name or merge, at least every `checkpointScans` scans,
@@ -20,13 +17,12 @@
 // Names and merges carry request IDs and act once per ID (RequestLog.h).
 #pragma once
 
-#include <deque>
 #include <mutex>
-#include <optional>
 #include <string>
 
 #include "clientlibs/gatewaydetection/GatewayDetectionClient.h"
 #include "clientlibs/scanmapper/ScanMapperClient.h"
+#include "core/rgmap/feed/KernelFeed.h"
 #include "core/rgmap/kernel/RgMapViews.h"
 #include "servers/common/InputFollower.h"
 #include "servers/common/RequestLog.h"
@@ -73,18 +69,7 @@ class RgMappingKernelService {
 
  private:
   bool followOnce();          // false when there was nothing new
-  bool fetchScans();          // true when scans came
-  bool fetchRevisions();      // true when revisions came
-  bool fetchEvents();         // true when events came
-  // Under lock: feeds scans and events in order up to the next revision to apply, and returns
-  // that one; `fed` becomes true when something was fed.
-  std::optional<PoseRevisionInfo> mapPending(bool& fed);
-  // The poses of the kernel's scans after a revision, or the latest ones (nullopt).
-  std::vector<CorrectedPose> posesOfKernelScans(std::optional<std::uint64_t> revision);
-  // Applies the revision (false: the ScanMapper, restarted, has not made it again yet).
-  bool applyRevision(const PoseRevisionInfo& revision);
-  void applyFinalPoses();     // once the input ended: the ScanMapper's final poses
-  Pose2D correctedPoseOf(DataId scan) const;  // under lock; the kernel's pose of a scan it holds
+  void publishCounters();     // under lock: the feed's counters as health figures
   void checkpoint();          // under lock: hands the checkpoint to the writer
   // Leaves out the input record the kernel failed on kAttemptsPerRecord times (InputFollower.h).
   std::string skipFailingRecord();
@@ -95,17 +80,11 @@ class RgMappingKernelService {
   ModuleHealth& health_;
   std::mutex mutex_;
   std::unique_ptr<RgMappingKernel> kernel_;
-  std::deque<CorrectedScan> scans_;    // fetched, not fed yet
-  std::deque<PoseRevisionInfo> revisions_;  // known, not applied yet
-  std::deque<GatewayEvent> events_;    // fetched, not fed yet
-  DataId detectionLastScan_ = 0;       // the detector has processed every scan up to this one
-  bool scansEnded_ = false, eventsEnded_ = false, finished_ = false;
-  enum class Feeding { Nothing, Scan, Event, Revision, FinalPoses };
-  Feeding feeding_ = Feeding::Nothing;  // what the kernel is being fed
   RgMapEventId checkpointedEvent_ = 0;  // as of the last checkpoint handed to the writer
   DataId checkpointedScan_ = 0;
   RequestLog requests_;
   CheckpointWriter writer_;
+  KernelFeed feed_;
   InputFollower follower_;  // last: it stops before the rest goes
 };
 

@@ -9,6 +9,7 @@
 
 #include "clientlibs/common/ClientConnection.h"
 #include "core/common/AtomicFile.h"
+#include "core/slam/PoseQueries.h"
 #include "core/slam/SlamStateCodec.h"
 
 namespace rgnav {
@@ -143,13 +144,6 @@ void ScanMapperService::checkpoint() {
   }
 }
 
-bool ScanMapperService::isKeyframe(DataId id) const {
-  const auto& records = mapper_.state().scans;
-  const auto it = std::lower_bound(records.begin(), records.end(), id,
-                                   [](const ScanRecord& r, DataId value) { return r.id < value; });
-  return it != records.end() && it->id == id && it->keyframe != kNoKeyframe;
-}
-
 CorrectedBatch ScanMapperService::correctedSince(DataId afterId, std::size_t maxCount) {
   std::lock_guard lock(mutex_);
   CorrectedBatch out;
@@ -158,7 +152,8 @@ CorrectedBatch ScanMapperService::correctedSince(DataId afterId, std::size_t max
   for (const LaserScan& scan : scans_.since(afterId, maxCount).records) {
     if (scan.id > out.latestId) break;
     out.scans.push_back(
-        CorrectedScan{scan, mapper_.correctedPose(scan.id), mapper_.mappedPose(scan.id), isKeyframe(scan.id)});
+        CorrectedScan{scan, mapper_.correctedPose(scan.id), mapper_.mappedPose(scan.id),
+                      isKeyframe(mapper_.state(), scan.id)});
   }
   out.endOfData = finished_ && (out.scans.empty() ? afterId : out.scans.back().scan.id) >= out.latestId;
   return out;
@@ -177,14 +172,8 @@ Pose2D ScanMapperService::odomToMap(DataId id, const Pose2D& odometryPose) {
 }
 
 std::vector<PoseUpdate> ScanMapperService::poses(DataId first, DataId last, std::size_t cap) {
-  if (first == 0 || last < first) throw InvalidArgumentError("poses wants 1 <= firstId <= lastId");
   std::lock_guard lock(mutex_);
-  if (first > mapper_.lastInputId())
-    throw NotAvailableError("no scan after " + std::to_string(mapper_.lastInputId()) + " is mapped yet");
-  std::vector<PoseUpdate> out;
-  for (DataId id = first; id <= std::min(last, mapper_.lastInputId()) && out.size() < cap; ++id)
-    out.push_back(PoseUpdate{id, mapper_.correctedPose(id)});
-  return out;
+  return latestPoses(mapper_.state(), first, last, cap);
 }
 
 std::vector<PoseRevisionInfo> ScanMapperService::revisionsSince(std::uint64_t afterRevision,
@@ -193,30 +182,13 @@ std::vector<PoseRevisionInfo> ScanMapperService::revisionsSince(std::uint64_t af
   std::lock_guard lock(mutex_);
   followers_.asked(follower, afterRevision, now);
   if (const std::optional<std::uint64_t> applied = followers_.appliedByAll(now)) mapper_.forgetRevisionsUpTo(*applied);
-  std::vector<PoseRevisionInfo> out;
-  for (const PoseRevision& r : mapper_.state().revisions)
-    if (r.number > afterRevision) out.push_back({r.number, r.atScan});
-  return out;
+  return revisionsAfter(mapper_.state(), afterRevision);
 }
 
 std::vector<PoseUpdate> ScanMapperService::revisedPoses(std::uint64_t revision, DataId first, DataId last,
                                                         std::size_t cap) {
-  if (first == 0 || last < first) throw InvalidArgumentError("revisedPoses wants 1 <= firstId <= lastId");
   std::lock_guard lock(mutex_);
-  const auto& revisions = mapper_.state().revisions;
-  const auto kept = std::find_if(revisions.begin(), revisions.end(),
-                                 [revision](const PoseRevision& r) { return r.number == revision; });
-  if (kept == revisions.end()) throw NotAvailableError("revision " + std::to_string(revision) + " is not kept");
-  if (last >= kept->atScan)
-    throw InvalidArgumentError("revision " + std::to_string(revision) + " was made at scan " +
-                               std::to_string(kept->atScan) + ": it revises no scan from there on");
-  const auto& scans = mapper_.state().scans;
-  auto it = std::lower_bound(scans.begin(), scans.end(), first,
-                             [](const ScanRecord& r, DataId value) { return r.id < value; });
-  std::vector<PoseUpdate> out;
-  for (; it != scans.end() && it->id <= last && out.size() < cap; ++it)
-    out.push_back(PoseUpdate{it->id, mapper_.revisedPose(it->id, revision)});
-  return out;
+  return rgnav::revisedPoses(mapper_.state(), revision, first, last, cap);
 }
 
 DataId ScanMapperService::latestCorrectedId() {

@@ -70,7 +70,6 @@ class ScanMapperService {
   // its ranges (and with the odometry before it if its own is not finite).
   std::string skipFailingScan();
   void checkpoint();            // under lock
-  bool isKeyframe(DataId id) const;  // under lock
 
   ScanMapperServiceOptions options_;
   LaserClient laser_;

@@ -18,6 +18,7 @@
 #include "core/sim/SimulationConfigYaml.h"
 #include "core/slam/SlamConfigYaml.h"
 #include "core/supervision/SetConfig.h"
+#include "tests/eval/split/IpaSplit.h"
 
 namespace fs = std::filesystem;
 using namespace rgnav;
@@ -79,6 +80,8 @@ bool loadShipped(const fs::path& file) {
     loadWorld(file.string());
   } else if (folder == "gateways" && extension == ".txt") {
     loadHmmModels(file.string());
+  } else if (folder == "eval" && file.filename() == "ipa-split.yaml") {
+    loadIpaSplit(file.string());
   } else {
     return false;
   }

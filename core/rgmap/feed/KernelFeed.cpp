@@ -14,8 +14,14 @@ constexpr DataId kPoseChunk = 5000;  // latest poses asked per call
 }  // namespace
 
 KernelFeed::KernelFeed(RgMappingKernel& kernel, std::mutex& kernelMutex, CorrectedScanInput& scans,
-                       GatewayEventInput& events, std::uint32_t fetchBatch)
-    : kernel_(kernel), mutex_(kernelMutex), scanInput_(scans), eventInput_(events), fetchBatch_(fetchBatch) {
+                       GatewayEventInput& events, std::uint32_t fetchBatch,
+                       std::function<std::uint64_t()> durableRevision)
+    : kernel_(kernel),
+      mutex_(kernelMutex),
+      scanInput_(scans),
+      eventInput_(events),
+      fetchBatch_(fetchBatch),
+      durableRevision_(std::move(durableRevision)) {
   if (fetchBatch == 0) throw InvalidArgumentError("kernel feed: the fetch batch must be at least 1");
 }
 
@@ -23,6 +29,7 @@ bool KernelFeed::step() {
   {
     std::lock_guard lock(mutex_);
     if (finished_) return false;
+    feeding_ = Feeding::Nothing;
   }
   // Scans before revisions: a revision made while a scan was taken in is known once that scan is.
   const bool scans = fetchScans();
@@ -69,7 +76,7 @@ bool KernelFeed::fetchRevisions() {
   {
     std::lock_guard lock(mutex_);
     // What a restart from the durable state would have applied: the input keeps what is after it.
-    durable = durableRevision_.value_or(kernel_.state().lastPoseRevision);
+    durable = durableRevision_ ? durableRevision_() : kernel_.state().lastPoseRevision;
     known = revisions_.empty() ? kernel_.state().lastPoseRevision : revisions_.back().revision;
   }
   const std::vector<PoseRevisionInfo> revisions = scanInput_.revisionsSince(durable);
@@ -108,6 +115,7 @@ bool KernelFeed::fetchEvents() {
 void KernelFeed::feedEventsUpTo(DataId scan, bool& fed) {
   while (!events_.empty() && events_.front().scanId <= scan) {
     const GatewayEvent& e = events_.front();
+    feeding_ = Feeding::Event;
     const auto& stored = kernel_.state().scans;
     const auto lastScan = stored.find(e.gateway.lastScan);
     if (lastScan == stored.end())
@@ -125,6 +133,7 @@ std::optional<PoseRevisionInfo> KernelFeed::feedPending(bool& fed) {
     const CorrectedScan& s = scans_.front();
     feedEventsUpTo(s.scan.id - 1, fed);
     if (!revisions_.empty() && revisions_.front().atScan <= s.scan.id) return revisions_.front();
+    feeding_ = Feeding::Scan;
     kernel_.addScan(s.scan, s.mapped);
     ++counters_.scansMapped;
     const DataId id = s.scan.id;
@@ -160,6 +169,7 @@ bool KernelFeed::applyRevision(const PoseRevisionInfo& revision) {
   bool replaced;
   {
     std::lock_guard lock(mutex_);
+    feeding_ = Feeding::Revision;
     replaced = kernel_.state().lastScanId >= revision.atScan;  // learned of too late
   }
   std::vector<CorrectedPose> poses;
@@ -182,10 +192,46 @@ bool KernelFeed::applyRevision(const PoseRevisionInfo& revision) {
 }
 
 void KernelFeed::applyFinalPoses() {
+  {
+    std::lock_guard lock(mutex_);
+    feeding_ = Feeding::FinalPoses;
+  }
   std::vector<CorrectedPose> poses = posesOfKernelScans(std::nullopt);
   const std::uint64_t revision = scanInput_.revision();
   std::lock_guard lock(mutex_);
   kernel_.revisePoses(poses, revision);
+}
+
+std::string KernelFeed::skipFailing() {
+  switch (feeding_) {
+    case Feeding::Scan:
+      if (scans_.empty()) break;
+      {
+        const DataId id = scans_.front().scan.id;
+        scans_.pop_front();
+        return "corrected scan " + std::to_string(id);
+      }
+    case Feeding::Event:
+      if (events_.empty()) break;
+      {
+        const GatewayEventId id = events_.front().id;
+        events_.pop_front();
+        return "gateway event " + std::to_string(id);
+      }
+    case Feeding::Revision:
+      if (revisions_.empty()) break;
+      {
+        const std::uint64_t number = revisions_.front().revision;
+        revisions_.pop_front();
+        return "pose revision " + std::to_string(number);
+      }
+    case Feeding::FinalPoses:
+      finished_ = true;  // the map keeps the poses as mapped
+      return "the final poses";
+    case Feeding::Nothing:
+      break;
+  }
+  return "nothing (the step failed while fetching, not while mapping)";
 }
 
 }  // namespace rgnav

@@ -12,13 +12,17 @@
 // replaced by the latest poses and counted (posesReplaced); revisions the input forgot before
 // the feed learned of them are counted (revisionsNotKept). A revision a restarted input has not
 // made again yet is waited for.
+// A record the kernel keeps failing on (a malformed event, a scan it refuses) can be left out with
+// skipFailing(), so that one bad record does not stop the map.
 // Locking: every access to the kernel and to the feed's queues happens under `kernelMutex`, which
 // the owner also takes for its own use of the kernel; calls to the inputs happen outside it.
 #pragma once
 
 #include <cstdint>
 #include <deque>
+#include <functional>
 #include <mutex>
+#include <string>
 #include <optional>
 #include <vector>
 
@@ -38,8 +42,11 @@ struct KernelFeedCounters {
 class KernelFeed {
  public:
   // `fetchBatch`: records asked from each input per call (at least 1: InvalidArgumentError).
+  // `durableRevision` (called under kernelMutex) is the pose revision the owner's durable state
+  // (its checkpoint) holds: the ScanMapper may forget the revisions up to it. Without it, the
+  // kernel's own revision is durable.
   KernelFeed(RgMappingKernel& kernel, std::mutex& kernelMutex, CorrectedScanInput& scans, GatewayEventInput& events,
-             std::uint32_t fetchBatch);
+             std::uint32_t fetchBatch, std::function<std::uint64_t()> durableRevision = {});
 
   // One round: fetches what is new from both inputs, feeds the kernel as far as the contract
   // allows, and applies the final poses once both inputs ended. True if anything came or was fed.
@@ -49,11 +56,12 @@ class KernelFeed {
 
   // Under kernelMutex: both inputs ended and everything was fed, final poses included.
   bool finished() const { return finished_; }
-  // Under kernelMutex: the revision the owner's durable state (its checkpoint) holds; the
-  // ScanMapper may forget the revisions up to it. Unset, the kernel's own is durable.
-  void setDurableRevision(std::uint64_t revision) { durableRevision_ = revision; }
   // Under kernelMutex.
   const KernelFeedCounters& counters() const { return counters_; }
+  // Under kernelMutex, after step() failed: leaves out the record the kernel was being fed when
+  // it failed (a scan, an event, a revision; the final poses: the map keeps the poses as mapped
+  // and is finished) and says which it was.
+  std::string skipFailing();
 
  private:
   bool fetchScans();
@@ -69,6 +77,8 @@ class KernelFeed {
   bool applyRevision(const PoseRevisionInfo& revision);
   void applyFinalPoses();
 
+  enum class Feeding { Nothing, Scan, Event, Revision, FinalPoses };
+
   RgMappingKernel& kernel_;
   std::mutex& mutex_;
   CorrectedScanInput& scanInput_;
@@ -79,7 +89,8 @@ class KernelFeed {
   std::deque<GatewayEvent> events_;         // fetched, not fed yet
   DataId detectionLastScan_ = 0;            // the detector has processed every scan up to this one
   bool scansEnded_ = false, eventsEnded_ = false, finished_ = false;
-  std::optional<std::uint64_t> durableRevision_;
+  std::function<std::uint64_t()> durableRevision_;
+  Feeding feeding_ = Feeding::Nothing;  // what the kernel is being fed
   KernelFeedCounters counters_;
 };
 
