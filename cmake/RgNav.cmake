@@ -25,6 +25,9 @@ endfunction()
 # rgnav_add_test(<name> SOURCES <files>... [LIBS <libs>...] [LABELS <labels>...])
 # A CppUnit test executable registered with CTest; runs with the project root as working dir.
 function(rgnav_add_test name)
+  if(RGNAV_FUZZ)
+    return()  # the fuzz build has no unit tests
+  endif()
   cmake_parse_arguments(ARG "" "TIMEOUT" "SOURCES;LIBS;LABELS" ${ARGN})
   add_executable(${name} ${ARG_SOURCES})
   target_link_libraries(${name} PRIVATE rgnav_testmain ${ARG_LIBS})
@@ -41,6 +44,9 @@ endfunction()
 # rgnav_test_environment(<test> <timeout_s>): where a test finds the shared data, the built
 # programs and the project root, and how long it may run.
 function(rgnav_test_environment test timeout)
+  if(RGNAV_FUZZ)
+    return()
+  endif()
   set_tests_properties(${test} PROPERTIES TIMEOUT ${timeout}
     ENVIRONMENT "RGNAV_SHARED=${RGNAV_SHARED_DIR};RGNAV_BIN=${CMAKE_BINARY_DIR}/bin;RGNAV_ROOT=${CMAKE_SOURCE_DIR}")
 endfunction()
