@@ -52,6 +52,9 @@ endfunction()
 # rgnav_add_test(<name> SOURCES <files>... [LIBS <libs>...] LABELS <kind> [<labels>...] [TIMEOUT <s>])
 # A CppUnit test executable registered with CTest; runs with the project root as working dir.
 function(rgnav_add_test name)
+  if(RGNAV_FUZZ)
+    return()  # the fuzz build has no unit tests
+  endif()
   cmake_parse_arguments(ARG "" "TIMEOUT" "SOURCES;LIBS;LABELS" ${ARGN})
   rgnav_require_test_kind(${name} "${ARG_LABELS}")
   add_executable(${name} ${ARG_SOURCES})
@@ -98,6 +101,9 @@ endfunction()
 # rgnav_test_environment(<test> <timeout_s>): where a test finds the shared data, the built
 # programs and the project root, and how long it may run.
 function(rgnav_test_environment test timeout)
+  if(RGNAV_FUZZ)
+    return()
+  endif()
   set_tests_properties(${test} PROPERTIES TIMEOUT ${timeout}
     ENVIRONMENT "RGNAV_SHARED=${RGNAV_SHARED_DIR};RGNAV_BIN=${CMAKE_BINARY_DIR}/bin;RGNAV_ROOT=${CMAKE_SOURCE_DIR}")
 endfunction()

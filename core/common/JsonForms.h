@@ -1,16 +1,62 @@
 // JsonForms: how the checkpoints and exports write numbers, points and poses as JSON
 // (nlohmann::json): numbers in the shortest form that reads back to the same double, non-finite
-// numbers as "inf", "-inf" and null (NaN), points as [x, y], poses as [x, y, theta]. Reading
-// anything else throws FormatError (file "<checkpoint>").
+// numbers as "inf", "-inf" and null (NaN), points as [x, y], poses as [x, y, theta], IDs and
+// counts as JSON integers. Reading anything else throws FormatError (file "<checkpoint>").
 #pragma once
 
 #include <Eigen/Core>
+#include <concepts>
 #include <nlohmann/json.hpp>
+#include <string>
+#include <utility>
 #include <vector>
 
+#include "core/common/Errors.h"
 #include "core/common/Pose2D.h"
 
 namespace rgnav {
+
+// A JSON integer on its way into an integer of any type (the type assigned to): a number that is
+// not an integer (2.5, 1e99) or does not fit the type is a FormatError, where nlohmann's own
+// conversion would truncate it or, out of range, be undefined behaviour.
+class JsonInteger {
+ public:
+  explicit JsonInteger(const nlohmann::json& j) : j_(j) {}
+
+  template <std::integral T>
+  operator T() const {  // NOLINT: implicit on purpose, like nlohmann's own conversion
+    if (j_.is_number_unsigned()) {
+      const auto v = j_.get<std::uint64_t>();
+      if (std::in_range<T>(v)) return static_cast<T>(v);
+    } else if (j_.is_number_integer()) {
+      const auto v = j_.get<std::int64_t>();
+      if (std::in_range<T>(v)) return static_cast<T>(v);
+    }
+    throw FormatError("<checkpoint>", 0, "not an integer in range: " + j_.dump());
+  }
+
+ private:
+  const nlohmann::json& j_;
+};
+
+inline JsonInteger integerFrom(const nlohmann::json& j) { return JsonInteger(j); }
+
+// A JSON array of integers into a vector, set or std::array of integers (an array's size must match).
+template <class Container>
+Container integersFrom(const nlohmann::json& j) {
+  if (!j.is_array()) throw FormatError("<checkpoint>", 0, "not a list of integers: " + j.dump());
+  using Value = typename Container::value_type;
+  Container out{};
+  if constexpr (requires { out.push_back(Value{}); }) {
+    for (const nlohmann::json& e : j) out.push_back(static_cast<Value>(integerFrom(e)));
+  } else if constexpr (requires { out.insert(Value{}); }) {
+    for (const nlohmann::json& e : j) out.insert(static_cast<Value>(integerFrom(e)));
+  } else {
+    if (j.size() != out.size()) throw FormatError("<checkpoint>", 0, "not " + std::to_string(out.size()) + " integers: " + j.dump());
+    for (std::size_t i = 0; i < out.size(); ++i) out[i] = static_cast<Value>(integerFrom(j[i]));
+  }
+  return out;
+}
 
 nlohmann::json jsonNumber(double v);
 double numberFrom(const nlohmann::json& j);

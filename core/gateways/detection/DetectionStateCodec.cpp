@@ -44,18 +44,18 @@ json trackedGateway(const TrackedGateway& g) {
 }
 TrackedGateway trackedGateway(const json& j) {
   TrackedGateway g;
-  g.id = j.at("id");
+  g.id = integerFrom(j.at("id"));
   g.left = pointFrom(j.at("left"));
   g.right = pointFrom(j.at("right"));
   g.meanConfidence = j.at("confidence");
-  g.support = j.at("support");
-  g.observations = j.at("observations");
-  g.firstScan = j.at("first");
-  g.lastScan = j.at("last");
+  g.support = integerFrom(j.at("support"));
+  g.observations = integerFrom(j.at("observations"));
+  g.firstScan = integerFrom(j.at("first"));
+  g.lastScan = integerFrom(j.at("last"));
   g.lastRobotPose = poseFrom(j.at("lastPose"));
   g.confirmed = j.at("confirmed");
   g.superseded = j.value("superseded", false);  // version 2 had no superseded track
-  g.traversals = j.at("traversals");
+  g.traversals = integerFrom(j.at("traversals"));
   return g;
 }
 
@@ -71,10 +71,10 @@ PassageTrackerState passages(const json& j) {
   PassageTrackerState s;
   s.tracks = list<PassageTrackState>(j.at("tracks"), [](const json& t) {
     return PassageTrackState{trackedGateway(t.at("gateway")), pointFrom(t.at("leftSum")), pointFrom(t.at("rightSum")),
-                             t.at("confidenceSum").get<double>(), t.at("lastUpdate").get<std::size_t>()};
+                             t.at("confidenceSum").get<double>(), integerFrom(t.at("lastUpdate"))};
   });
-  s.updates = j.at("updates");
-  s.nextId = j.at("nextId");
+  s.updates = integerFrom(j.at("updates"));
+  s.nextId = integerFrom(j.at("nextId"));
   if (!j.at("lastPose").is_null()) s.lastPose = poseFrom(j.at("lastPose"));
   return s;
 }
@@ -85,11 +85,11 @@ json sequence(const TrackedSequence& s) {
 }
 TrackedSequence sequence(const json& j) {
   TrackedSequence s;
-  s.id = j.at("id");
+  s.id = integerFrom(j.at("id"));
   s.gatewayPoints = gatewayPoints(j.at("points"));
   s.distances = j.at("distances").get<std::vector<double>>();
   s.observations = j.at("observations").get<std::vector<std::vector<double>>>();
-  const int end = j.at("end");
+  const int end = integerFrom(j.at("end"));
   if (end < 0 || end > static_cast<int>(SequenceEnd::Flushed)) throw std::out_of_range("sequence end");
   s.end = static_cast<SequenceEnd>(end);
   return s;
@@ -105,10 +105,10 @@ json sequences(const HypothesisTrackerState& s) {
 }
 HypothesisTrackerState sequences(const json& j) {
   HypothesisTrackerState s;
-  s.nextId = j.at("nextId");
+  s.nextId = integerFrom(j.at("nextId"));
   s.running = list<RunningSequence>(j.at("running"), [](const json& r) {
-    return RunningSequence{sequence(r.at("sequence")), r.at("missed").get<std::size_t>(),
-                           r.at("coasted").get<std::size_t>()};
+    return RunningSequence{sequence(r.at("sequence")), integerFrom(r.at("missed")),
+                           integerFrom(r.at("coasted"))};
   });
   s.finished = list<TrackedSequence>(j.at("finished"), [](const json& f) { return sequence(f); });
   return s;
@@ -135,13 +135,13 @@ HallwayAreaState areas(const json& j) {
     area.views = list<HallwayView>(a.at("views"), [](const json& v) {
       const std::vector<double> p = v.at("posterior").get<std::vector<double>>();
       return HallwayView{pointFrom(v.at("entrance")), Eigen::Map<const Eigen::VectorXd>(p.data(), static_cast<Eigen::Index>(p.size())),
-                         v.at("sequences").get<std::size_t>()};
+                         integerFrom(v.at("sequences"))};
     });
-    area.firstScan = a.at("first");
-    area.lastScan = a.at("last");
+    area.firstScan = integerFrom(a.at("first"));
+    area.lastScan = integerFrom(a.at("last"));
     area.lastRobotPose = poseFrom(a.at("lastPose"));
-    area.traversals = a.at("traversals");
-    if (!a.at("enteredThrough").is_null()) area.enteredThrough = a.at("enteredThrough").get<std::size_t>();
+    area.traversals = integerFrom(a.at("traversals"));
+    if (!a.at("enteredThrough").is_null()) area.enteredThrough = static_cast<std::size_t>(integerFrom(a.at("enteredThrough")));
     return area;
   });
   if (!j.at("lastPosition").is_null()) s.lastPosition = pointFrom(j.at("lastPosition"));
@@ -156,14 +156,14 @@ json event(const GatewayEvent& e) {
 }
 GatewayEvent event(const json& j) {
   GatewayEvent e;
-  e.id = j.at("id");
-  const int kind = j.at("kind");
+  e.id = integerFrom(j.at("id"));
+  const int kind = integerFrom(j.at("kind"));
   if (kind < 0 || kind > static_cast<int>(GatewayEventKind::Traversed)) throw std::out_of_range("event kind");
   e.kind = static_cast<GatewayEventKind>(kind);
-  e.scanId = j.at("scan");
+  e.scanId = integerFrom(j.at("scan"));
   e.gateway = gatewayRecordFrom(j.at("gateway"));
   const json& t = j.at("traversal");
-  e.traversal = {t.at("scan"), t.at("from"), t.at("to"), pointFrom(t.at("at")), pointFrom(t.at("direction"))};
+  e.traversal = {integerFrom(t.at("scan")), integerFrom(t.at("from")), integerFrom(t.at("to")), pointFrom(t.at("at")), pointFrom(t.at("direction"))};
   return e;
 }
 
@@ -176,7 +176,7 @@ json idMap(const std::map<K, GatewayId>& m) {
 template <class K>
 std::map<K, GatewayId> idMap(const json& j) {
   std::map<K, GatewayId> out;
-  for (const json& pair : j) out.emplace(pair.at(0).get<K>(), pair.at(1).get<GatewayId>());
+  for (const json& pair : j) out.emplace(static_cast<K>(integerFrom(pair.at(0))), static_cast<GatewayId>(integerFrom(pair.at(1))));
   return out;
 }
 
@@ -212,9 +212,9 @@ DetectionCheckpoint deserializeDetection(const std::string& text) {
     d.areas = areas(j.at("areas"));
     d.passageIds = idMap<GatewayId>(j.at("passageIds"));
     d.areaIds = idMap<std::size_t>(j.at("areaIds"));
-    d.nextGatewayId = j.at("nextGatewayId");
-    d.nextEventId = j.at("nextEventId");
-    d.lastScan = j.at("lastScan");
+    d.nextGatewayId = integerFrom(j.at("nextGatewayId"));
+    d.nextEventId = integerFrom(j.at("nextEventId"));
+    d.lastScan = integerFrom(j.at("lastScan"));
     c.events = list<GatewayEvent>(j.at("events"), [](const json& e) { return event(e); });
     return c;
   } catch (const json::exception& e) {

@@ -26,7 +26,7 @@ json jsonGatewayRecord(const GatewayRecord& r) {
 
 GatewayRecord gatewayRecordFrom(const json& j) {
   GatewayRecord r;
-  r.id = j.at("id");
+  r.id = integerFrom(j.at("id"));
   const std::string kind = j.at("kind");
   if (kind != "NarrowPassage" && kind != "HallwayArea") throw FormatError("<checkpoint>", 0, "gateway kind " + kind);
   r.kind = kind == "NarrowPassage" ? GatewayKind::NarrowPassage : GatewayKind::HallwayArea;
@@ -35,11 +35,11 @@ GatewayRecord gatewayRecordFrom(const json& j) {
   r.gatewayPoints = pointsFrom(j.at("gatewayPoints"));
   r.crossingPoints = pointsFrom(j.at("crossingPoints"));
   r.widthM = numberFrom(j.at("width"));
-  r.firstScan = j.at("first");
-  r.lastScan = j.at("last");
+  r.firstScan = integerFrom(j.at("first"));
+  r.lastScan = integerFrom(j.at("last"));
   r.lastPose = poseFrom(j.at("lastPose"));
-  r.support = j.at("support");
-  r.traversals = j.at("traversals");
+  r.support = integerFrom(j.at("support"));
+  r.traversals = integerFrom(j.at("traversals"));
   return r;
 }
 

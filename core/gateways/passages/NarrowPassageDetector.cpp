@@ -162,7 +162,9 @@ std::vector<PassageHypothesis> NarrowPassageDetector::detect(const LaserScan& sc
   });
   std::vector<PassageHypothesis> hypotheses;
   std::vector<std::pair<std::size_t, std::size_t>> taken;
-  for (const auto& [pair, alphaM] : found) {
+  for (const auto& candidate : found) {
+    const Pair& pair = candidate.first;  // not a structured binding: clang 14 cannot capture one
+    const double alphaM = candidate.second;
     const bool overlaps = std::any_of(taken.begin(), taken.end(), [&](const auto& t) {
       return pair.right < t.second && t.first < pair.left;
     });

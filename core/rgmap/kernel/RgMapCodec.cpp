@@ -55,19 +55,19 @@ json gateway(const Gateway& g) {
 }
 Gateway gateway(const json& j) {
   Gateway g;
-  g.id = j.at("id");
+  g.id = integerFrom(j.at("id"));
   g.record = gatewayRecordFrom(j.at("record"));
-  g.aliases = j.at("aliases").get<std::vector<DetectorGatewayId>>();
+  g.aliases = integersFrom<std::vector<DetectorGatewayId>>(j.at("aliases"));
   g.odomToMap = poseFrom(j.at("odomToMap"));
   const json& sides = j.at("sides");
   if (sides.size() != 2) damaged("gateway " + std::to_string(g.id) + ": want two sides");
   for (std::size_t i = 0; i < 2; ++i) {
     const json& s = sides.at(i);
-    g.sides[i] = {s.at("region").get<RegionId>(),
-                  s.at("crossing").is_null() ? kNoCrossing : s.at("crossing").get<std::size_t>(),
-                  s.at("attachedAt").get<DataId>()};
+    g.sides[i] = {static_cast<RegionId>(integerFrom(s.at("region"))),
+                  s.at("crossing").is_null() ? kNoCrossing : static_cast<std::size_t>(integerFrom(s.at("crossing"))),
+                  static_cast<DataId>(integerFrom(s.at("attachedAt")))};
   }
-  g.traversalsFrom = j.at("traversalsFrom").get<std::array<std::size_t, 2>>();
+  g.traversalsFrom = integersFrom<std::array<std::size_t, 2>>(j.at("traversalsFrom"));
   g.neutralised = j.at("neutralised").get<bool>();
   return g;
 }
@@ -80,10 +80,10 @@ json region(const Region& r) {
 }
 // "objectNames" came with object naming; a checkpoint written before has none.
 Region region(const json& j) {
-  Region r{j.at("id").get<RegionId>(),
+  Region r{static_cast<RegionId>(integerFrom(j.at("id"))),
            poseFrom(j.at("frame")),
-           j.at("scans").get<std::vector<DataId>>(),
-           j.at("gateways").get<std::set<GatewayId>>(),
+           integersFrom<std::vector<DataId>>(j.at("scans")),
+           integersFrom<std::set<GatewayId>>(j.at("gateways")),
            j.at("name").get<std::string>(),
            j.at("finalised").get<bool>(),
            {}};
@@ -105,7 +105,7 @@ json laser(const LaserScan& l) {
 }
 LaserScan laser(const json& j) {
   LaserScan l;
-  l.id = j.at("id").get<DataId>();
+  l.id = static_cast<DataId>(integerFrom(j.at("id")));
   l.stamp = numberFrom(j.at("stamp"));
   l.odometry = poseFrom(j.at("odometry"));
   l.sensorPose = poseFrom(j.at("sensorPose"));
@@ -139,16 +139,16 @@ RgMapEvent event(const json& j) {
   const std::string name = j.at("kind");
   const std::optional<RgMapEventKind> kind = parseEventKind(name);
   if (!kind) damaged("event kind " + name);
-  return {j.at("id").get<RgMapEventId>(),   *kind,
-          j.at("region").get<RegionId>(),   j.at("other").get<RegionId>(),
-          j.at("gateway").get<GatewayId>(), j.at("scan").get<DataId>()};
+  return {static_cast<RgMapEventId>(integerFrom(j.at("id"))),   *kind,
+          static_cast<RegionId>(integerFrom(j.at("region"))),   static_cast<RegionId>(integerFrom(j.at("other"))),
+          static_cast<GatewayId>(integerFrom(j.at("gateway"))), static_cast<DataId>(integerFrom(j.at("scan")))};
 }
 
 json node(const NodeKey& k) { return json::array({k.gateway, k.side == GatewaySide::A ? "A" : "B"}); }
 NodeKey node(const json& j) {
   const std::string side = j.at(1);
   if (side != "A" && side != "B") damaged("gateway side " + side);
-  return {j.at(0).get<GatewayId>(), side == "A" ? GatewaySide::A : GatewaySide::B};
+  return {static_cast<GatewayId>(integerFrom(j.at(0))), side == "A" ? GatewaySide::A : GatewaySide::B};
 }
 
 json costs(const RgMapState& s) {
@@ -169,9 +169,9 @@ void costs(const json& j, RgMapState& s) {
     if (kind != "gateway" && kind != "region") damaged("edge kind " + kind);
     const EdgeKey key =
         edgeKey(kind == "gateway" ? EdgeKind::Gateway : EdgeKind::Region, node(t.at("a")), node(t.at("b")));
-    s.edgeTraversals[key] = {numberFrom(t.at("mean")), t.at("count").get<std::size_t>()};
+    s.edgeTraversals[key] = {numberFrom(t.at("mean")), static_cast<std::size_t>(integerFrom(t.at("count")))};
   }
-  for (const json& d : j.at("doorOffsets")) s.doorOffsets[d.at(0).get<GatewayId>()] = numberFrom(d.at(1));
+  for (const json& d : j.at("doorOffsets")) s.doorOffsets[static_cast<GatewayId>(integerFrom(d.at(0)))] = numberFrom(d.at(1));
 }
 
 // Reads the items of `j` into `into`, keyed by key(item); a key seen twice is damage.
@@ -220,13 +220,13 @@ RgMapState deserializeRgMap(const std::string& text, const std::string& journal)
     if (j.at("format") != kFormat) damaged("not an RG map checkpoint");
     if (j.at("version") != kVersion)
       damaged("version " + j.at("version").dump() + ", this program reads " + std::to_string(kVersion));
-    s.current = j.at("current");
-    s.visitStart = j.at("visitStart");
-    s.nextRegionId = j.at("nextRegionId");
-    s.nextGatewayId = j.at("nextGatewayId");
-    s.lastScanId = j.at("lastScanId");
-    s.lastGatewayEventId = j.at("lastGatewayEventId");
-    s.lastPoseRevision = j.at("lastPoseRevision");
+    s.current = integerFrom(j.at("current"));
+    s.visitStart = integerFrom(j.at("visitStart"));
+    s.nextRegionId = integerFrom(j.at("nextRegionId"));
+    s.nextGatewayId = integerFrom(j.at("nextGatewayId"));
+    s.lastScanId = integerFrom(j.at("lastScanId"));
+    s.lastGatewayEventId = integerFrom(j.at("lastGatewayEventId"));
+    s.lastPoseRevision = integerFrom(j.at("lastPoseRevision"));
     insertAll(
         j.at("regions"), s.regions, [](const json& r) { return region(r); }, [](const Region& r) { return r.id; },
         "region");
@@ -236,7 +236,7 @@ RgMapState deserializeRgMap(const std::string& text, const std::string& journal)
     insertAll(
         j.at("scans"), s.scans,
         [&](const json& sc) {
-          const DataId id = sc.at("id").get<DataId>();
+          const DataId id = static_cast<DataId>(integerFrom(sc.at("id")));
           const auto found = lasers.find(id);
           if (found == lasers.end()) damaged("scan " + std::to_string(id) + " is not in the scan journal");
           return StoredScan{std::move(found->second), poseFrom(sc.at("corrected"))};
