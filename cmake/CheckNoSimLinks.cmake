@@ -34,7 +34,7 @@ if(NOT targets)
 endif()
 
 # The shortest chain of links from `start` to a simulator library, "" if there is none: the
-# start's own links, then what each library passes on, skipping allowed links.
+# start's own links, then what each library passes on.
 function(chain_to_simulator start out)
   set(queue ${start})
   set(seen ${start})
@@ -46,7 +46,7 @@ function(chain_to_simulator start out)
       set(next ${passes_${node}})
     endif()
     foreach(to IN LISTS next)
-      if(to IN_LIST seen OR to IN_LIST allow_${node})
+      if(to IN_LIST seen)
         continue()
       endif()
       list(APPEND seen ${to})

@@ -1,11 +1,10 @@
-# rgnav_write_link_graph(<file> [ALLOW <from>><to>...]): writes the project's link graph, as
+# rgnav_write_link_graph(<file>): writes the project's link graph, as
 # CMake itself holds it after configuring, for CheckNoSimLinks.cmake. Call at the end of the
 # top-level CMakeLists.txt, once every target and every target_link_libraries call exists. Lines of <file>:
 #   target|<name>|<folder relative to the source root>|<role>   role: test, testing or product
 #   link|<from>|<to>        what <from> links itself (LINK_LIBRARIES)
 #   passes|<from>|<to>      what <from> passes on to whoever links it (INTERFACE_LINK_LIBRARIES;
 #                           for a static library this includes its private links)
-#   allow|<from>|<to>       a link the check does not follow (the ALLOW arguments)
 # A test is an executable registered by rgnav_add_test (property RGNAV_TEST_CODE); a testing
 # library is a test helper named *_testing.
 
@@ -36,13 +35,8 @@ function(_rgnav_link_items target property out)
 endfunction()
 
 function(rgnav_write_link_graph file)
-  cmake_parse_arguments(ARG "" "" "ALLOW" ${ARGN})
   _rgnav_collect_targets(${CMAKE_SOURCE_DIR} targets)
   set(lines "")
-  foreach(edge ${ARG_ALLOW})
-    string(REPLACE ">" "|" edge "${edge}")
-    list(APPEND lines "allow|${edge}")
-  endforeach()
   foreach(t ${targets})
     get_target_property(type ${t} TYPE)
     if(NOT type MATCHES "^(STATIC_LIBRARY|SHARED_LIBRARY|MODULE_LIBRARY|OBJECT_LIBRARY|INTERFACE_LIBRARY|EXECUTABLE)$")
