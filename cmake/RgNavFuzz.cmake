@@ -5,7 +5,10 @@
 if(NOT CMAKE_CXX_COMPILER_ID STREQUAL "Clang")
   message(FATAL_ERROR "RGNAV_FUZZ needs clang (-DCMAKE_CXX_COMPILER=clang++), not ${CMAKE_CXX_COMPILER_ID}")
 endif()
-add_compile_options(-g -fno-omit-frame-pointer -fsanitize=fuzzer-no-link,address,undefined
+# -O1 with line tables, as libFuzzer's documentation suggests: it builds in half the time of -O3
+# (the suite builds this too) and reports still name file and line.
+set(CMAKE_CXX_FLAGS_RELEASE "-O1 -DNDEBUG")
+add_compile_options(-gline-tables-only -fno-omit-frame-pointer -fsanitize=fuzzer-no-link,address,undefined
                     -fno-sanitize-recover=all)
 add_link_options(-fsanitize=address,undefined)
 add_subdirectory(${CMAKE_SOURCE_DIR}/core ${CMAKE_BINARY_DIR}/core EXCLUDE_FROM_ALL)
