@@ -30,13 +30,8 @@ Pose2D correctedPose(const SlamState& state, const ScanRecord& scan) {
       state, scan, [&state](KeyframeIndex k) { return state.keyframes[k].pose; }, state.keyframes.size());
 }
 
-std::vector<ScanRecord>::const_iterator lowerBound(const SlamState& state, DataId scanId) {
-  return std::lower_bound(state.scans.begin(), state.scans.end(), scanId,
-                          [](const ScanRecord& scan, DataId id) { return scan.id < id; });
-}
-
 const ScanRecord& inputScan(const SlamState& state, DataId scanId) {
-  const auto it = lowerBound(state, scanId);
+  const auto it = firstScanFrom(state, scanId);
   if (it == state.scans.end() || it->id != scanId)
     throw NotAvailableError("slam: no scan with ID " + std::to_string(scanId) + " was input");
   return *it;
@@ -44,26 +39,36 @@ const ScanRecord& inputScan(const SlamState& state, DataId scanId) {
 
 }  // namespace
 
+std::vector<ScanRecord>::const_iterator firstScanFrom(const SlamState& state, DataId scanId) {
+  return std::lower_bound(state.scans.begin(), state.scans.end(), scanId,
+                          [](const ScanRecord& scan, DataId id) { return scan.id < id; });
+}
+
+const PoseRevision& keptRevision(const SlamState& state, std::uint64_t revision) {
+  const auto kept = std::lower_bound(state.revisions.begin(), state.revisions.end(), revision,
+                                     [](const PoseRevision& r, std::uint64_t number) { return r.number < number; });
+  if (kept == state.revisions.end() || kept->number != revision)
+    throw NotAvailableError("slam: revision " + std::to_string(revision) + " is not kept");
+  return *kept;
+}
+
 Pose2D correctedPose(const SlamState& state, DataId scanId) { return correctedPose(state, inputScan(state, scanId)); }
 
 Pose2D mappedPose(const SlamState& state, DataId scanId) { return inputScan(state, scanId).mapped; }
 
 Pose2D revisedPose(const SlamState& state, DataId scanId, std::uint64_t revision) {
-  const auto kept = std::lower_bound(state.revisions.begin(), state.revisions.end(), revision,
-                                     [](const PoseRevision& r, std::uint64_t number) { return r.number < number; });
-  if (kept == state.revisions.end() || kept->number != revision)
-    throw NotAvailableError("slam: revision " + std::to_string(revision) + " is not kept");
+  const PoseRevision& kept = keptRevision(state, revision);
   const ScanRecord& scan = inputScan(state, scanId);
-  if (scanId >= kept->atScan)
+  if (scanId >= kept.atScan)
     throw InvalidArgumentError("slam: scan " + std::to_string(scanId) + " was input after revision " +
                                std::to_string(revision));
-  const std::vector<Pose2D>& poses = kept->keyframePoses;
+  const std::vector<Pose2D>& poses = kept.keyframePoses;
   return blendedPose(state, scan, [&poses](KeyframeIndex k) { return poses[k]; }, poses.size());
 }
 
 Pose2D odomToMap(const SlamState& state, DataId scanId, const Pose2D& odometryPose) {
   if (state.scans.empty()) throw NotAvailableError("slam: no scan was input yet");
-  auto it = lowerBound(state, scanId);
+  auto it = firstScanFrom(state, scanId);
   if (it == state.scans.end() || (it != state.scans.begin() && it->id - scanId >= scanId - std::prev(it)->id)) --it;
   return compose(compose(correctedPose(state, *it), inverse(it->odometry)), odometryPose);
 }

@@ -9,12 +9,19 @@
 #pragma once
 
 #include <cstdint>
+#include <vector>
 
 #include "core/common/Pose2D.h"
 #include "core/common/SensorData.h"
 #include "core/slam/SlamState.h"
 
 namespace rgnav {
+
+// The first input scan whose ID is at least scanId (state.scans is in ID order), or the end.
+std::vector<ScanRecord>::const_iterator firstScanFrom(const SlamState& state, DataId scanId);
+
+// The kept revision numbered `revision`; NotAvailableError if it is not kept.
+const PoseRevision& keptRevision(const SlamState& state, std::uint64_t revision);
 
 // Throws NotAvailableError if no scan with this ID was input.
 Pose2D correctedPose(const SlamState& state, DataId scanId);

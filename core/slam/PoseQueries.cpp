@@ -8,14 +8,6 @@
 #include "core/slam/CorrectedPoses.h"
 
 namespace rgnav {
-namespace {
-
-std::vector<ScanRecord>::const_iterator firstRecordFrom(const SlamState& state, DataId id) {
-  return std::lower_bound(state.scans.begin(), state.scans.end(), id,
-                          [](const ScanRecord& r, DataId value) { return r.id < value; });
-}
-
-}  // namespace
 
 std::vector<PoseUpdate> latestPoses(const SlamState& state, DataId firstId, DataId lastId, std::size_t cap) {
   if (firstId == 0 || lastId < firstId) throw InvalidArgumentError("poses wants 1 <= firstId <= lastId");
@@ -30,14 +22,12 @@ std::vector<PoseUpdate> latestPoses(const SlamState& state, DataId firstId, Data
 std::vector<PoseUpdate> revisedPoses(const SlamState& state, std::uint64_t revision, DataId firstId, DataId lastId,
                                      std::size_t cap) {
   if (firstId == 0 || lastId < firstId) throw InvalidArgumentError("revisedPoses wants 1 <= firstId <= lastId");
-  const auto kept = std::find_if(state.revisions.begin(), state.revisions.end(),
-                                 [revision](const PoseRevision& r) { return r.number == revision; });
-  if (kept == state.revisions.end()) throw NotAvailableError("revision " + std::to_string(revision) + " is not kept");
-  if (lastId >= kept->atScan)
+  const PoseRevision& kept = keptRevision(state, revision);
+  if (lastId >= kept.atScan)
     throw InvalidArgumentError("revision " + std::to_string(revision) + " was made at scan " +
-                               std::to_string(kept->atScan) + ": it revises no scan from there on");
+                               std::to_string(kept.atScan) + ": it revises no scan from there on");
   std::vector<PoseUpdate> out;
-  for (auto it = firstRecordFrom(state, firstId); it != state.scans.end() && it->id <= lastId && out.size() < cap;
+  for (auto it = firstScanFrom(state, firstId); it != state.scans.end() && it->id <= lastId && out.size() < cap;
        ++it)
     out.push_back(PoseUpdate{it->id, revisedPose(state, it->id, revision)});
   return out;
@@ -51,7 +41,7 @@ std::vector<PoseRevisionInfo> revisionsAfter(const SlamState& state, std::uint64
 }
 
 bool isKeyframe(const SlamState& state, DataId scanId) {
-  const auto it = firstRecordFrom(state, scanId);
+  const auto it = firstScanFrom(state, scanId);
   return it != state.scans.end() && it->id == scanId && it->keyframe != kNoKeyframe;
 }
 
