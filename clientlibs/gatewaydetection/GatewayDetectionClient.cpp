@@ -23,9 +23,9 @@ std::vector<GatewayRecord> GatewayDetectionClient::gateways() {
   });
 }
 
-GatewayRecord GatewayDetectionClient::gateway(GatewayId id) {
+GatewayRecord GatewayDetectionClient::gateway(DetectorGatewayId id) {
   return connection_.call("gateway", [&](RGNav::GatewayDetection_ptr m) {
-    RGNav::GatewayInfo_var g = m->gatewayById(id);
+    RGNav::GatewayInfo_var g = m->gatewayById(id.value());
     return fromIdl(g.in());
   });
 }

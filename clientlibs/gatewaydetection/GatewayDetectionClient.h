@@ -18,7 +18,7 @@ class GatewayDetectionClient : public ModuleClientOf<RGNav::GatewayDetection>, p
 
   GatewayEventBatch eventsSince(GatewayEventId afterId, std::uint32_t maxCount) override;
   std::vector<GatewayRecord> gateways();
-  GatewayRecord gateway(GatewayId id);
+  GatewayRecord gateway(DetectorGatewayId id);
   DataId lastProcessedScan();
   bool detectsHallways();
 

@@ -58,7 +58,7 @@ std::vector<ClassProbability> fromIdl(const RGNav::ClassProbabilitySeq& classes)
 
 RGNav::GatewayInfo toIdl(const GatewayRecord& g) {
   RGNav::GatewayInfo out;
-  out.id = g.id;
+  out.id = g.id.value();
   out.kind = toIdl(g.kind);
   out.classes = toIdl(g.classes);
   out.gatewayPoints = toIdl(g.gatewayPoints);
@@ -74,7 +74,7 @@ RGNav::GatewayInfo toIdl(const GatewayRecord& g) {
 
 GatewayRecord fromIdl(const RGNav::GatewayInfo& g) {
   GatewayRecord out;
-  out.id = g.id;
+  out.id = DetectorGatewayId(g.id);
   out.kind = fromIdl(g.kind);
   out.classes = fromIdl(g.classes);
   out.gatewayPoints = fromIdl(g.gatewayPoints);

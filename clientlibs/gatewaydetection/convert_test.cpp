@@ -14,7 +14,7 @@ class GatewayDetectionConvertTest : public CppUnit::TestFixture {
  public:
   void batchRoundTrip() {
     GatewayRecord door;
-    door.id = 3;
+    door.id = DetectorGatewayId(3);
     door.kind = GatewayKind::NarrowPassage;
     door.classes = {{kNarrowPassageClass, 0.8}};
     door.gatewayPoints = {{1.0, 2.0}, {1.0, 1.1}};
@@ -26,7 +26,7 @@ class GatewayDetectionConvertTest : public CppUnit::TestFixture {
     door.support = 25;
     door.traversals = 1;
     GatewayRecord crossing = door;
-    crossing.id = 4;
+    crossing.id = DetectorGatewayId(4);
     crossing.kind = GatewayKind::HallwayArea;
     crossing.classes = {{"X-Crossing", 0.7}, {"T-Junction", 0.2}, {"Hallway", 0.1}};
     crossing.gatewayPoints = {{-1, 1}, {1, 1}, {1, -1}, {-1, -1}};

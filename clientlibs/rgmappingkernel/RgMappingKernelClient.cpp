@@ -49,7 +49,7 @@ RegionView RgMappingKernelClient::currentRegion() {
 
 RegionView RgMappingKernelClient::region(RegionId id) {
   return connection_.call("regionById", [&](Kernel k) {
-    RGNav::RegionInfo_var r = k->regionById(id);
+    RGNav::RegionInfo_var r = k->regionById(id.value());
     return fromIdl(r.in());
   });
 }
@@ -78,23 +78,23 @@ GraphView RgMappingKernelClient::graph() {
 PathView RgMappingKernelClient::findPath(RegionId startRegion, const Eigen::Vector2d& start, RegionId goalRegion,
                                          const Eigen::Vector2d& goal) {
   return connection_.call("findPath", [&](Kernel k) {
-    RGNav::RgPath_var p = k->findPath(startRegion, toIdl(start), goalRegion, toIdl(goal));
+    RGNav::RgPath_var p = k->findPath(startRegion.value(), toIdl(start), goalRegion.value(), toIdl(goal));
     return fromIdl(p.in());
   });
 }
 
 void RgMappingKernelClient::nameRegion(RegionId id, const std::string& name) {
   const RequestId request = newRequestId();
-  connection_.call("nameRegion", [&](Kernel k) { k->nameRegion(request, id, name.c_str()); });
+  connection_.call("nameRegion", [&](Kernel k) { k->nameRegion(request, id.value(), name.c_str()); });
 }
 
 RegionId RgMappingKernelClient::regionByName(const std::string& name) {
-  return connection_.call("regionByName", [&](Kernel k) { return k->regionByName(name.c_str()); });
+  return connection_.call("regionByName", [&](Kernel k) { return RegionId(k->regionByName(name.c_str())); });
 }
 
 void RgMappingKernelClient::nameObject(RegionId region, const Eigen::Vector2d& atInRegion, const std::string& name) {
   const RequestId request = newRequestId();
-  connection_.call("nameObject", [&](Kernel k) { k->nameObject(request, region, toIdl(atInRegion), name.c_str()); });
+  connection_.call("nameObject", [&](Kernel k) { k->nameObject(request, region.value(), toIdl(atInRegion), name.c_str()); });
 }
 
 RgMappingKernel::NamedObject RgMappingKernelClient::objectByName(const std::string& name) {
@@ -103,7 +103,7 @@ RgMappingKernel::NamedObject RgMappingKernelClient::objectByName(const std::stri
 
 RegionId RgMappingKernelClient::mergeRegions(RegionId a, RegionId b) {
   const RequestId request = newRequestId();
-  return connection_.call("mergeRegions", [&](Kernel k) { return k->mergeRegions(request, a, b); });
+  return connection_.call("mergeRegions", [&](Kernel k) { return RegionId(k->mergeRegions(request, a.value(), b.value())); });
 }
 
 RgMapEventBatch RgMappingKernelClient::eventsSince(RgMapEventId afterId, std::uint32_t maxCount) {

@@ -9,26 +9,26 @@ namespace rgnav {
 namespace {
 
 RGNav::RgNode node(const GraphNodeView& n) {
-  return RGNav::RgNode{n.gateway, static_cast<CORBA::ULong>(n.side), n.region, toIdl(n.position)};
+  return RGNav::RgNode{n.gateway.value(), static_cast<CORBA::ULong>(n.side), n.region.value(), toIdl(n.position)};
 }
-GraphNodeView node(const RGNav::RgNode& n) { return {n.gateway, n.side, n.region, fromIdl(n.position)}; }
+GraphNodeView node(const RGNav::RgNode& n) { return {GatewayId(n.gateway), n.side, RegionId(n.region), fromIdl(n.position)}; }
 
 }  // namespace
 
 RGNav::RegionSummary toIdl(const RegionSummaryView& s) {
   RGNav::RegionSummary out;
-  out.id = s.id;
+  out.id = s.id.value();
   out.name = s.name.c_str();
   out.frame = toIdl(s.frame);
   out.scans = static_cast<CORBA::ULong>(s.scans);
   out.finalised = s.finalised;
-  out.gateways = toIdlSeq<RGNav::GatewayIdSeq>(s.gateways, [](GatewayId id) { return id; });
+  out.gateways = toIdlSeq<RGNav::GatewayIdSeq>(s.gateways, [](GatewayId id) { return id.value(); });
   return out;
 }
 
 RegionSummaryView fromIdl(const RGNav::RegionSummary& s) {
-  return {s.id, s.name.in(), fromIdl(s.frame), s.scans, static_cast<bool>(s.finalised),
-          fromIdlSeq<std::vector<GatewayId>>(s.gateways, [](GatewayId id) { return id; })};
+  return {RegionId(s.id), s.name.in(), fromIdl(s.frame), s.scans, static_cast<bool>(s.finalised),
+          fromIdlSeq<std::vector<GatewayId>>(s.gateways, [](RGNav::GatewayId id) { return GatewayId(id); })};
 }
 
 RGNav::RegionInfo toIdl(const RegionView& r) {
@@ -85,36 +85,37 @@ RegionView fromIdl(const RGNav::RegionInfo& r) {
   return out;
 }
 
-RGNav::NamedObject toIdl(const RgMappingKernel::NamedObject& o) { return {o.region, toIdl(o.namedAt)}; }
+RGNav::NamedObject toIdl(const RgMappingKernel::NamedObject& o) { return {o.region.value(), toIdl(o.namedAt)}; }
 
-RgMappingKernel::NamedObject fromIdl(const RGNav::NamedObject& o) { return {o.region, fromIdl(o.namedAt)}; }
+RgMappingKernel::NamedObject fromIdl(const RGNav::NamedObject& o) { return {RegionId(o.region), fromIdl(o.namedAt)}; }
 
 RGNav::RgGateway toIdl(const GatewayView& g) {
   RGNav::RgGateway out;
-  out.id = g.id;
-  out.detectorId = g.detectorId;
+  out.id = g.id.value();
+  out.detectorId = g.detectorId.value();
   out.classes = toIdl(g.classes);
   out.door = g.door;
   out.neutralised = g.neutralised;
   out.gatewayPoints = toIdl(g.gatewayPoints);
   out.crossingPoints = toIdl(g.crossingPoints);
-  out.sideA = g.sideA;
-  out.sideB = g.sideB;
+  out.sideA = g.sideA.value();
+  out.sideB = g.sideB.value();
   out.traversals = static_cast<CORBA::ULong>(g.traversals);
   return out;
 }
 
 GatewayView fromIdl(const RGNav::RgGateway& g) {
-  return {g.id, g.detectorId, fromIdl(g.classes), static_cast<bool>(g.door), static_cast<bool>(g.neutralised),
-          fromIdl(g.gatewayPoints), fromIdl(g.crossingPoints), g.sideA, g.sideB, g.traversals};
+  return {GatewayId(g.id), DetectorGatewayId(g.detectorId), fromIdl(g.classes), static_cast<bool>(g.door),
+          static_cast<bool>(g.neutralised), fromIdl(g.gatewayPoints), fromIdl(g.crossingPoints), RegionId(g.sideA),
+          RegionId(g.sideB), g.traversals};
 }
 
 RGNav::RgGraphInfo toIdl(const GraphView& graph) {
   RGNav::RgGraphInfo out;
   out.nodes = toIdlSeq<RGNav::RgNodeSeq>(graph.nodes, [](const GraphNodeView& n) { return node(n); });
   out.edges = toIdlSeq<RGNav::RgEdgeSeq>(graph.edges, [](const GraphEdgeView& e) {
-    return RGNav::RgEdge{static_cast<CORBA::ULong>(e.from), static_cast<CORBA::ULong>(e.to), e.throughGateway,
-                         e.through, e.lengthM, e.costM};
+    return RGNav::RgEdge{static_cast<CORBA::ULong>(e.from), static_cast<CORBA::ULong>(e.to), e.throughGateway(),
+                         e.throughGateway() ? e.gateway.value() : e.region.value(), e.lengthM, e.costM};
   });
   return out;
 }
@@ -123,7 +124,8 @@ GraphView fromIdl(const RGNav::RgGraphInfo& graph) {
   GraphView out;
   out.nodes = fromIdlSeq<std::vector<GraphNodeView>>(graph.nodes, [](const RGNav::RgNode& n) { return node(n); });
   out.edges = fromIdlSeq<std::vector<GraphEdgeView>>(graph.edges, [](const RGNav::RgEdge& e) {
-    return GraphEdgeView{e.from, e.to, static_cast<bool>(e.throughGateway), e.through, e.length, e.cost};
+    return e.throughGateway ? GraphEdgeView{e.from, e.to, GatewayId(e.through), RegionId{}, e.length, e.cost}
+                            : GraphEdgeView{e.from, e.to, GatewayId{}, RegionId(e.through), e.length, e.cost};
   });
   return out;
 }
@@ -143,11 +145,11 @@ PathView fromIdl(const RGNav::RgPath& path) {
 
 RGNav::RgMapSummary toIdl(const MapSummaryView& s) {
   return RGNav::RgMapSummary{static_cast<CORBA::ULong>(s.regions), static_cast<CORBA::ULong>(s.gateways),
-                             static_cast<CORBA::ULong>(s.neutralised), s.lastScan, s.lastEvent, s.current, s.endOfData};
+                             static_cast<CORBA::ULong>(s.neutralised), s.lastScan, s.lastEvent, s.current.value(), s.endOfData};
 }
 
 MapSummaryView fromIdl(const RGNav::RgMapSummary& s) {
-  return {s.regions, s.gateways, s.neutralized, s.lastScan, s.lastEvent, s.current, static_cast<bool>(s.endOfData)};
+  return {s.regions, s.gateways, s.neutralized, s.lastScan, s.lastEvent, RegionId(s.current), static_cast<bool>(s.endOfData)};
 }
 
 RGNav::RgMapEventBatch toIdl(const RgMapEventBatch& b) {
@@ -156,9 +158,9 @@ RGNav::RgMapEventBatch toIdl(const RgMapEventBatch& b) {
     RGNav::RgMapEvent x;
     x.id = e.id;
     x.kind = std::string(eventKindName(e.kind)).c_str();
-    x.region = e.region;
-    x.other = e.other;
-    x.gateway = e.gateway;
+    x.region = e.region.value();
+    x.other = e.other.value();
+    x.gateway = e.gateway.value();
     x.scanId = e.scanId;
     return x;
   });
@@ -173,7 +175,7 @@ RgMapEventBatch fromIdl(const RGNav::RgMapEventBatch& b) {
   out.events = fromIdlSeq<std::vector<RgMapEvent>>(b.events, [](const RGNav::RgMapEvent& e) {
     const auto kind = parseEventKind(e.kind.in());
     if (!kind) throw FormatError("RGMappingKernel::eventsSince", 0, std::string("unknown event kind ") + e.kind.in());
-    return RgMapEvent{e.id, *kind, e.region, e.other, e.gateway, e.scanId};
+    return RgMapEvent{e.id, *kind, RegionId(e.region), RegionId(e.other), GatewayId(e.gateway), e.scanId};
   });
   out.latestId = b.latestId;
   out.lastScan = b.lastScan;

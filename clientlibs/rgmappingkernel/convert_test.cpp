@@ -17,7 +17,7 @@ class RgMappingKernelConvertTest : public CppUnit::TestFixture {
  public:
   void regionRoundTrip() {
     RegionView r;
-    r.summary = {4, "kitchen", {1.0, 2.0, 0.5}, 120, true, {2, 7}};
+    r.summary = {RegionId{4}, "kitchen", {1.0, 2.0, 0.5}, 120, true, {GatewayId{2}, GatewayId{7}}};
     r.lines = {{{0, 0}, {3, 0}}, {{3, 0}, {3, 2}}};
     r.boxMin = {-0.1, -0.2};
     r.boxMax = {3.1, 2.2};
@@ -59,11 +59,12 @@ class RgMappingKernelConvertTest : public CppUnit::TestFixture {
   }
 
   void gatewayGraphPathRoundTrip() {
-    const GatewayView g{3, 9, {{"Narrow-Passage", 0.8}}, true, false, {{1, 2}, {1, 3}}, {{0.5, 2.5}, {1.5, 2.5}}, 1, 4, 2};
+    const GatewayView g{GatewayId{3}, DetectorGatewayId{9}, {{"Narrow-Passage", 0.8}}, true, false, {{1, 2}, {1, 3}},
+                       {{0.5, 2.5}, {1.5, 2.5}}, RegionId{1}, RegionId{4}, 2};
     CPPUNIT_ASSERT(fromIdl(toIdl(g)) == g);
     GraphView graph;
-    graph.nodes = {{3, 0, 1, {0.5, 2.5}}, {3, 1, 4, {1.5, 2.5}}};
-    graph.edges = {{0, 1, true, 3, 1.0, 1.5}};
+    graph.nodes = {{GatewayId{3}, 0, RegionId{1}, {0.5, 2.5}}, {GatewayId{3}, 1, RegionId{4}, {1.5, 2.5}}};
+    graph.edges = {{0, 1, GatewayId{3}, RegionId{}, 1.0, 1.5}, {0, 1, GatewayId{}, RegionId{4}, 0.5, 0.5}};
     const GraphView back = fromIdl(toIdl(graph));
     CPPUNIT_ASSERT(back.nodes == graph.nodes);
     CPPUNIT_ASSERT(back.edges == graph.edges);
@@ -75,10 +76,11 @@ class RgMappingKernelConvertTest : public CppUnit::TestFixture {
   }
 
   void summaryAndEventsRoundTrip() {
-    const MapSummaryView s{5, 6, 1, 900, 40, 3, true};
+    const MapSummaryView s{5, 6, 1, 900, 40, RegionId{3}, true};
     CPPUNIT_ASSERT(fromIdl(toIdl(s)) == s);
     RgMapEventBatch b;
-    b.events = {{7, RgMapEventKind::RegionsMerged, 2, 5, 0, 311}, {8, RgMapEventKind::GatewayNeutralised, 2, 0, 4, 311}};
+    b.events = {{7, RgMapEventKind::RegionsMerged, RegionId{2}, RegionId{5}, GatewayId{}, 311},
+                {8, RgMapEventKind::GatewayNeutralised, RegionId{2}, RegionId{}, GatewayId{4}, 311}};
     b.latestId = 8;
     b.lastScan = 320;
     b.endOfData = true;

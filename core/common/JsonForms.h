@@ -13,6 +13,7 @@
 
 #include "core/common/Errors.h"
 #include "core/common/Pose2D.h"
+#include "core/common/TypedId.h"
 
 namespace rgnav {
 
@@ -35,11 +36,29 @@ class JsonInteger {
     throw FormatError("<checkpoint>", 0, "not an integer in range: " + j_.dump());
   }
 
+  template <class Concept>
+  operator TypedId<Concept>() const {  // NOLINT: the field assigned to names the concept
+    return TypedId<Concept>(static_cast<std::uint64_t>(*this));
+  }
+
  private:
   const nlohmann::json& j_;
 };
 
 inline JsonInteger integerFrom(const nlohmann::json& j) { return JsonInteger(j); }
+
+// An ID is written as its integer and read back from a non-negative JSON integer (nlohmann::json
+// finds both through argument-dependent lookup); integerFrom reads it too.
+template <class Json, class Concept>
+void to_json(Json& j, const TypedId<Concept>& id) {
+  j = id.value();
+}
+
+template <class Json, class Concept>
+void from_json(const Json& j, TypedId<Concept>& id) {
+  if (!j.is_number_unsigned()) throw FormatError("<checkpoint>", 0, "not an ID: " + j.dump());
+  id = TypedId<Concept>(j.template get<std::uint64_t>());
+}
 
 // A JSON array of integers into a vector, set or std::array of integers (an array's size must match).
 template <class Container>

@@ -32,7 +32,7 @@ RGNav::GatewayInfoSeq* GatewayDetectionImpl::gateways() {
 RGNav::GatewayInfo* GatewayDetectionImpl::gatewayById(RGNav::GatewayId id) {
   return serve(Raises::InvalidArgument | Raises::NotAvailable, [&] {
     wire::requireId(id, "id");
-    return new RGNav::GatewayInfo(toIdl(service_.gateway(id)));
+    return new RGNav::GatewayInfo(toIdl(service_.gateway(DetectorGatewayId(id))));
   });
 }
 

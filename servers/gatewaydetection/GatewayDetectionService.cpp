@@ -108,11 +108,11 @@ std::vector<GatewayRecord> GatewayDetectionService::gateways() {
   return detector_->gateways();
 }
 
-GatewayRecord GatewayDetectionService::gateway(GatewayId id) {
+GatewayRecord GatewayDetectionService::gateway(DetectorGatewayId id) {
   std::lock_guard lock(mutex_);
   for (GatewayRecord& g : detector_->gateways())
     if (g.id == id) return g;
-  throw NotAvailableError("no gateway " + std::to_string(id) + " (yet)");
+  throw NotAvailableError("no gateway " + std::to_string(id.value()) + " (yet)");
 }
 
 DataId GatewayDetectionService::lastProcessedScan() {

@@ -48,7 +48,7 @@ class GatewayDetectionService {
   GatewayEventBatch eventsSince(GatewayEventId afterId, std::size_t maxCount);
   std::vector<GatewayRecord> gateways();
   // NotAvailableError for an ID not (yet) given.
-  GatewayRecord gateway(GatewayId id);
+  GatewayRecord gateway(DetectorGatewayId id);
   DataId lastProcessedScan();
   bool detectsHallways();
 

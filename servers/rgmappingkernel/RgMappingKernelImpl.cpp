@@ -28,7 +28,7 @@ RGNav::RegionInfo* RgMappingKernelImpl::currentRegion() {
 RGNav::RegionInfo* RgMappingKernelImpl::regionById(RGNav::RegionId id) {
   return serve(kLookup, [&] {
     wire::requireId(id, "id");
-    return new RGNav::RegionInfo(toIdl(service_.region(id)));
+    return new RGNav::RegionInfo(toIdl(service_.region(RegionId(id))));
   });
 }
 
@@ -58,7 +58,7 @@ RGNav::RgPath* RgMappingKernelImpl::findPath(RGNav::RegionId startRegion, const 
     wire::requireId(goalRegion, "goalRegion");
     wire::requireFinite(goal, "goal");
     return new RGNav::RgPath(
-        toIdl(service_.findPath(RgPlace{startRegion, fromIdl(start)}, RgPlace{goalRegion, fromIdl(goal)})));
+        toIdl(service_.findPath(RgPlace{RegionId(startRegion), fromIdl(start)}, RgPlace{RegionId(goalRegion), fromIdl(goal)})));
   });
 }
 
@@ -66,12 +66,12 @@ void RgMappingKernelImpl::nameRegion(RGNav::RequestId requestId, RGNav::RegionId
   serve(kArgs, [&] {
     wire::requireId(requestId, "requestId");
     wire::requireId(id, "id");
-    service_.nameRegion(requestId, id, wire::checkedName(name, "name"));
+    service_.nameRegion(requestId, RegionId(id), wire::checkedName(name, "name"));
   });
 }
 
 RGNav::RegionId RgMappingKernelImpl::regionByName(const char* name) {
-  return serve(kLookup, [&] { return service_.regionByName(wire::checkedName(name, "name", false)); });
+  return serve(kLookup, [&] { return service_.regionByName(wire::checkedName(name, "name", false)).value(); });
 }
 
 void RgMappingKernelImpl::nameObject(RGNav::RequestId requestId, RGNav::RegionId region,
@@ -80,7 +80,7 @@ void RgMappingKernelImpl::nameObject(RGNav::RequestId requestId, RGNav::RegionId
     wire::requireId(requestId, "requestId");
     wire::requireId(region, "region");
     wire::requireFinite(atInRegion, "atInRegion");
-    service_.nameObject(requestId, region, fromIdl(atInRegion), wire::checkedName(name, "name"));
+    service_.nameObject(requestId, RegionId(region), fromIdl(atInRegion), wire::checkedName(name, "name"));
   });
 }
 
@@ -93,7 +93,7 @@ RGNav::RegionId RgMappingKernelImpl::mergeRegions(RGNav::RequestId requestId, RG
     wire::requireId(requestId, "requestId");
     wire::requireId(a, "a");
     wire::requireId(b, "b");
-    return service_.mergeRegions(requestId, a, b);
+    return service_.mergeRegions(requestId, RegionId(a), RegionId(b)).value();
   });
 }
 

@@ -111,7 +111,7 @@ MapSummaryView RgMappingKernelService::summary() {
 
 RegionView RgMappingKernelService::currentRegion() {
   std::lock_guard lock(mutex_);
-  if (kernel_->currentRegionId() == 0) throw NotAvailableError("no scan mapped yet");
+  if (kernel_->currentRegionId().isNone()) throw NotAvailableError("no scan mapped yet");
   return regionView(*kernel_, kernel_->currentRegionId());
 }
 
@@ -175,9 +175,9 @@ RgMappingKernel::NamedObject RgMappingKernelService::objectByName(const std::str
 
 RegionId RgMappingKernelService::mergeRegions(std::uint64_t requestId, RegionId a, RegionId b) {
   std::lock_guard lock(mutex_);
-  if (const std::optional<std::uint64_t> merged = requests_.answered(requestId)) return *merged;
+  if (const std::optional<std::uint64_t> merged = requests_.answered(requestId)) return RegionId(*merged);
   const RegionId merged = kernel_->mergeRegions(a, b);
-  requests_.record(requestId, merged);
+  requests_.record(requestId, merged.value());
   checkpoint();
   return merged;
 }

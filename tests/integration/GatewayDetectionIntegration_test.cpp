@@ -52,7 +52,7 @@ class GatewayDetectionIntegrationTest : public CppUnit::TestFixture {
     const std::vector<GatewayEvent> events = allEvents(detection);
     CPPUNIT_ASSERT_EQUAL(DataId(kIntelScans), detection.lastProcessedScan());
 
-    std::set<GatewayId> detected;
+    std::set<DetectorGatewayId> detected;
     std::size_t traversals = 0, passages = 0, hallways = 0;
     for (std::size_t i = 0; i < events.size(); ++i) {
       const GatewayEvent& e = events[i];
@@ -72,7 +72,7 @@ class GatewayDetectionIntegrationTest : public CppUnit::TestFixture {
     const std::vector<GatewayRecord> gateways = detection.gateways();
     CPPUNIT_ASSERT_EQUAL(detected.size(), gateways.size());
     CPPUNIT_ASSERT(detection.gateway(gateways.back().id) == gateways.back());
-    CPPUNIT_ASSERT_THROW(detection.gateway(gateways.back().id + 1000), NotAvailableError);
+    CPPUNIT_ASSERT_THROW(detection.gateway(DetectorGatewayId(gateways.back().id.value() + 1000)), NotAvailableError);
 
     CPPUNIT_ASSERT(std::filesystem::exists(cluster.dir() + "/run/state/GatewayDetection/gateways.state"));
     const auto old = cluster.describe("GatewayDetection");

@@ -91,16 +91,16 @@ MapSummaryView waitForEnd(RgMappingKernelClient& kernel) {
 void checkInvariants(const std::vector<RegionSummaryView>& regions, const std::vector<GatewayView>& gateways) {
   std::map<RegionId, std::set<GatewayId>> byRegion;
   for (const RegionSummaryView& r : regions) {
-    CPPUNIT_ASSERT_MESSAGE("empty region " + std::to_string(r.id), r.scans > 0);
+    CPPUNIT_ASSERT_MESSAGE("empty region " + std::to_string(r.id.value()), r.scans > 0);
     byRegion[r.id] = std::set<GatewayId>(r.gateways.begin(), r.gateways.end());
   }
   for (const GatewayView& g : gateways) {
     for (const RegionId side : {g.sideA, g.sideB}) {
-      if (side == 0) continue;
-      CPPUNIT_ASSERT_MESSAGE("gateway " + std::to_string(g.id) + " names unknown region", byRegion.count(side) == 1);
-      CPPUNIT_ASSERT_MESSAGE("region does not list gateway " + std::to_string(g.id), byRegion[side].count(g.id) == 1);
+      if (side.isNone()) continue;
+      CPPUNIT_ASSERT_MESSAGE("gateway " + std::to_string(g.id.value()) + " names unknown region", byRegion.count(side) == 1);
+      CPPUNIT_ASSERT_MESSAGE("region does not list gateway " + std::to_string(g.id.value()), byRegion[side].count(g.id) == 1);
     }
-    CPPUNIT_ASSERT_EQUAL(g.sideA != 0 && g.sideA == g.sideB, g.neutralised);
+    CPPUNIT_ASSERT_EQUAL(!g.sideA.isNone() && g.sideA == g.sideB, g.neutralised);
   }
   for (const auto& [region, listed] : byRegion)
     for (const GatewayId id : listed) {
@@ -139,11 +139,11 @@ class RgMappingKernelIntegrationTest : public CppUnit::TestFixture {
     CPPUNIT_ASSERT(first.areaM2 > 1.0);
     CPPUNIT_ASSERT(first.freespace.width > 0 && !first.freespace.bytes.empty());
     CPPUNIT_ASSERT_EQUAL(summary.current, kernel.currentRegion().summary.id);
-    CPPUNIT_ASSERT_THROW(kernel.region(100000), NotAvailableError);
+    CPPUNIT_ASSERT_THROW(kernel.region(RegionId{100000}), NotAvailableError);
 
     // A path between two regions joined by a gateway.
     const GatewayView joined = *std::find_if(gateways.begin(), gateways.end(), [](const GatewayView& g) {
-      return g.sideA != 0 && g.sideB != 0 && !g.neutralised;
+      return !g.sideA.isNone() && !g.sideB.isNone() && !g.neutralised;
     });
     const PathView path = kernel.findPath(joined.sideA, joined.crossingPoints[0], joined.sideB, joined.crossingPoints[1]);
     CPPUNIT_ASSERT(path.lengthM > 0.0 && path.costM >= path.lengthM - 1e-9);
@@ -164,7 +164,7 @@ class RgMappingKernelIntegrationTest : public CppUnit::TestFixture {
     CPPUNIT_ASSERT_EQUAL(std::string("first object"), kernel.region(furnished.summary.id).objects.front().name);
     CPPUNIT_ASSERT_EQUAL(furnished.summary.id, kernel.objectByName("first object").region);
     CPPUNIT_ASSERT_THROW(kernel.objectByName("nothing"), NotAvailableError);
-    CPPUNIT_ASSERT_THROW(kernel.nameObject(100000, {0.0, 0.0}, "nothing"), InvalidArgumentError);
+    CPPUNIT_ASSERT_THROW(kernel.nameObject(RegionId{100000}, {0.0, 0.0}, "nothing"), InvalidArgumentError);
 
     // Exports go below the kernel's export root (by default <run dir>/exports), nowhere else.
     const std::string files = kernel.exportMap("maps", "intel", true);
@@ -182,13 +182,13 @@ class RgMappingKernelIntegrationTest : public CppUnit::TestFixture {
     }));
     CPPUNIT_ASSERT_EQUAL(std::string("maxCount"), refusedField([&] { kernel.eventsSince(0, 0); }));
     CPPUNIT_ASSERT_EQUAL(std::string("name"), refusedField([&] { kernel.nameRegion(joined.sideB, std::string(5000, 'x')); }));
-    CPPUNIT_ASSERT_EQUAL(std::string("id"), refusedField([&] { kernel.region(0); }));
+    CPPUNIT_ASSERT_EQUAL(std::string("id"), refusedField([&] { kernel.region(RegionId{0}); }));
 
     // A repeated request ID acts once: the second call, for another region, answers as the first
     // did and names nothing.
     TypedConnection<RGNav::RGMappingKernel> raw("RGMappingKernel", cluster.clientSettings());
     const auto nameOnce = [&](RegionId region) {
-      raw.call("nameRegion", [&](RGNav::RGMappingKernel_ptr k) { k->nameRegion(4242, region, "named once"); });
+      raw.call("nameRegion", [&](RGNav::RGMappingKernel_ptr k) { k->nameRegion(4242, region.value(), "named once"); });
     };
     nameOnce(joined.sideA);
     nameOnce(joined.sideB);

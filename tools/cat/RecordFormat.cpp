@@ -67,7 +67,7 @@ std::string pointList(const std::vector<Eigen::Vector2d>& points) {
 
 std::string gatewayFields(const GatewayRecord& g) {
   char buffer[160];
-  std::snprintf(buffer, sizeof buffer, "%llu %s %.3f width=%.2f points=", static_cast<unsigned long long>(g.id),
+  std::snprintf(buffer, sizeof buffer, "%llu %s %.3f width=%.2f points=", static_cast<unsigned long long>(g.id.value()),
                 g.label().c_str(), g.classes.front().probability, g.widthM);
   std::string out = buffer + pointList(g.gatewayPoints);
   std::snprintf(buffer, sizeof buffer, " seen=%llu-%llu", static_cast<unsigned long long>(g.firstScan),

@@ -39,7 +39,7 @@ int build(RgMappingKernelClient& kernel, const std::string& label, const std::st
       const double rate = double(s.lastScan - first) / std::max(secondsSince(start), 1e-3);
       std::fprintf(stderr, "\r%s: mapping scan %llu (%.0f scans/s), region %llu, %zu regions, %zu gateways   ",
                    label.c_str(), static_cast<unsigned long long>(s.lastScan), rate,
-                   static_cast<unsigned long long>(s.current), s.regions, s.gateways);
+                   static_cast<unsigned long long>(s.current.value()), s.regions, s.gateways);
     }
   }
   const double seconds = secondsSince(start);
@@ -53,7 +53,7 @@ int build(RgMappingKernelClient& kernel, const std::string& label, const std::st
 
 void printRegions(RgMappingKernelClient& kernel) {
   for (const RegionSummaryView& r : kernel.regions()) {
-    std::printf("region %llu%s%s frame=%.2f,%.2f,%.3f scans=%zu gateways=%zu%s\n", static_cast<unsigned long long>(r.id),
+    std::printf("region %llu%s%s frame=%.2f,%.2f,%.3f scans=%zu gateways=%zu%s\n", static_cast<unsigned long long>(r.id.value()),
                 r.name.empty() ? "" : " ", r.name.c_str(), r.frame.x, r.frame.y, r.frame.theta, r.scans,
                 r.gateways.size(), r.finalised ? "" : " (current)");
   }
@@ -61,9 +61,9 @@ void printRegions(RgMappingKernelClient& kernel) {
 
 void printGateways(RgMappingKernelClient& kernel) {
   for (const GatewayView& g : kernel.gateways()) {
-    std::printf("gateway %llu %s p=%.2f regions=%llu|%llu%s traversals=%zu\n", static_cast<unsigned long long>(g.id),
-                g.classes.front().name.c_str(), g.classes.front().probability, static_cast<unsigned long long>(g.sideA),
-                static_cast<unsigned long long>(g.sideB), g.neutralised ? " neutralised" : "", g.traversals);
+    std::printf("gateway %llu %s p=%.2f regions=%llu|%llu%s traversals=%zu\n", static_cast<unsigned long long>(g.id.value()),
+                g.classes.front().name.c_str(), g.classes.front().probability, static_cast<unsigned long long>(g.sideA.value()),
+                static_cast<unsigned long long>(g.sideB.value()), g.neutralised ? " neutralised" : "", g.traversals);
   }
 }
 
@@ -72,8 +72,8 @@ void printEvents(RgMappingKernelClient& kernel) {
     const RgMapEventBatch batch = kernel.eventsSince(after, 500);
     for (const RgMapEvent& e : batch.events) {
       std::printf("event %llu %s region=%llu other=%llu gateway=%llu scan=%llu\n", static_cast<unsigned long long>(e.id),
-                  std::string(eventKindName(e.kind)).c_str(), static_cast<unsigned long long>(e.region),
-                  static_cast<unsigned long long>(e.other), static_cast<unsigned long long>(e.gateway),
+                  std::string(eventKindName(e.kind)).c_str(), static_cast<unsigned long long>(e.region.value()),
+                  static_cast<unsigned long long>(e.other.value()), static_cast<unsigned long long>(e.gateway.value()),
                   static_cast<unsigned long long>(e.scanId));
       after = e.id;
     }
@@ -121,26 +121,26 @@ int main(int argc, char** argv) {
       printEvents(kernel);
     } else if (command == "name") {
       want(2);
-      kernel.nameRegion(std::stoull(args[0]), args[1]);
+      kernel.nameRegion(RegionId(std::stoull(args[0])), args[1]);
     } else if (command == "name-object") {
       want(4);
-      kernel.nameObject(std::stoull(args[0]), {std::stod(args[1]), std::stod(args[2])}, args[3]);
+      kernel.nameObject(RegionId(std::stoull(args[0])), {std::stod(args[1]), std::stod(args[2])}, args[3]);
     } else if (command == "object") {
       want(1);
       const RgMappingKernel::NamedObject found = kernel.objectByName(args[0]);
-      std::printf("object %s region=%llu at=%.2f,%.2f\n", args[0].c_str(), static_cast<unsigned long long>(found.region),
+      std::printf("object %s region=%llu at=%.2f,%.2f\n", args[0].c_str(), static_cast<unsigned long long>(found.region.value()),
                   found.namedAt.x(), found.namedAt.y());
     } else if (command == "merge") {
       want(2);
       std::printf("merged into region %llu\n",
-                  static_cast<unsigned long long>(kernel.mergeRegions(std::stoull(args[0]), std::stoull(args[1]))));
+                  static_cast<unsigned long long>(kernel.mergeRegions(RegionId(std::stoull(args[0])), RegionId(std::stoull(args[1]))).value()));
     } else if (command == "path") {
       want(6);
-      const PathView path = kernel.findPath(std::stoull(args[0]), {std::stod(args[1]), std::stod(args[2])},
-                                            std::stoull(args[3]), {std::stod(args[4]), std::stod(args[5])});
+      const PathView path = kernel.findPath(RegionId(std::stoull(args[0])), {std::stod(args[1]), std::stod(args[2])},
+                                            RegionId(std::stoull(args[3])), {std::stod(args[4]), std::stod(args[5])});
       for (const GraphNodeView& n : path.crossings)
-        std::printf("crossing gateway=%llu side=%zu region=%llu at=%.2f,%.2f\n", static_cast<unsigned long long>(n.gateway),
-                    n.side, static_cast<unsigned long long>(n.region), n.position.x(), n.position.y());
+        std::printf("crossing gateway=%llu side=%zu region=%llu at=%.2f,%.2f\n", static_cast<unsigned long long>(n.gateway.value()),
+                    n.side, static_cast<unsigned long long>(n.region.value()), n.position.x(), n.position.y());
       std::printf("path: cost=%.2f length=%.2f\n", path.costM, path.lengthM);
     } else if (command == "export") {
       want(2);

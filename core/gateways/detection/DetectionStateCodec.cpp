@@ -168,15 +168,15 @@ GatewayEvent event(const json& j) {
 }
 
 template <class K>
-json idMap(const std::map<K, GatewayId>& m) {
+json idMap(const std::map<K, DetectorGatewayId>& m) {
   json out = json::array();
   for (const auto& [k, v] : m) out.push_back(json::array({k, v}));
   return out;
 }
 template <class K>
-std::map<K, GatewayId> idMap(const json& j) {
-  std::map<K, GatewayId> out;
-  for (const json& pair : j) out.emplace(static_cast<K>(integerFrom(pair.at(0))), static_cast<GatewayId>(integerFrom(pair.at(1))));
+std::map<K, DetectorGatewayId> idMap(const json& j) {
+  std::map<K, DetectorGatewayId> out;
+  for (const json& pair : j) out.emplace(static_cast<K>(integerFrom(pair.at(0))), static_cast<DetectorGatewayId>(integerFrom(pair.at(1))));
   return out;
 }
 
@@ -210,7 +210,7 @@ DetectionCheckpoint deserializeDetection(const std::string& text) {
     d.passages = passages(j.at("passages"));
     d.sequences = sequences(j.at("sequences"));
     d.areas = areas(j.at("areas"));
-    d.passageIds = idMap<GatewayId>(j.at("passageIds"));
+    d.passageIds = idMap<PassageTrackId>(j.at("passageIds"));
     d.areaIds = idMap<std::size_t>(j.at("areaIds"));
     d.nextGatewayId = integerFrom(j.at("nextGatewayId"));
     d.nextEventId = integerFrom(j.at("nextEventId"));

@@ -61,7 +61,7 @@ GatewayEvent GatewayDetector::event(GatewayEventKind kind, GatewayRecord record,
   return GatewayEvent{nextEventId_++, kind, std::move(record), traversal, lastScan_};
 }
 
-GatewayRecord GatewayDetector::passageRecord(const TrackedGateway& track, GatewayId id) const {
+GatewayRecord GatewayDetector::passageRecord(const TrackedGateway& track, DetectorGatewayId id) const {
   GatewayRecord r;
   r.id = id;
   r.kind = GatewayKind::NarrowPassage;
@@ -80,7 +80,7 @@ GatewayRecord GatewayDetector::passageRecord(const TrackedGateway& track, Gatewa
   return r;
 }
 
-GatewayRecord GatewayDetector::areaRecord(std::size_t index, GatewayId id) const {
+GatewayRecord GatewayDetector::areaRecord(std::size_t index, DetectorGatewayId id) const {
   const HallwayArea& area = areaTracker_->state().areas.at(index);
   GatewayRecord r;
   r.id = id;
@@ -116,10 +116,10 @@ void GatewayDetector::detectPassages(const LaserScan& scan, const Pose2D& robotP
   const TrackerUpdate update = passageTracker_.update(scan.id, robotPose, passageDetector_.detect(scan, robotPose));
   // Wider twins first: a consumer that matches a new door to known ones by position (the RG
   // mapping kernel) then knows the twin for what it is before it sees the door that superseded it.
-  for (const GatewayId track : update.superseded)
+  for (const PassageTrackId track : update.superseded)
     out.push_back(event(GatewayEventKind::Updated, passageRecord(*passageTracker_.find(track), passageIds_.at(track))));
-  for (const GatewayId track : update.confirmed) {
-    const GatewayId id = passageIds_[track] = nextGatewayId_++;
+  for (const PassageTrackId track : update.confirmed) {
+    const DetectorGatewayId id = passageIds_[track] = nextGatewayId_++;
     out.push_back(event(GatewayEventKind::Detected, passageRecord(*passageTracker_.find(track), id)));
   }
   for (const GatewayTraversal& t : update.traversals) {
@@ -142,7 +142,7 @@ void GatewayDetector::detectHallways(const LaserScan& scan, const Pose2D& robotP
     if (known != areaIds_.end()) {
       out.push_back(event(GatewayEventKind::Updated, areaRecord(*area, known->second)));
     } else if (areaTracker_->isGateway(*area)) {
-      const GatewayId id = areaIds_[*area] = nextGatewayId_++;
+      const DetectorGatewayId id = areaIds_[*area] = nextGatewayId_++;
       out.push_back(event(GatewayEventKind::Detected, areaRecord(*area, id)));
     }
   }

@@ -48,9 +48,9 @@ struct GatewayDetectorState {
   PassageTrackerState passages;
   HypothesisTrackerState sequences;
   HallwayAreaState areas;
-  std::map<GatewayId, GatewayId> passageIds;  // passage track -> gateway
-  std::map<std::size_t, GatewayId> areaIds;   // area index -> gateway
-  GatewayId nextGatewayId = 1;
+  std::map<PassageTrackId, DetectorGatewayId> passageIds;  // passage track -> gateway
+  std::map<std::size_t, DetectorGatewayId> areaIds;   // area index -> gateway
+  DetectorGatewayId nextGatewayId{1};
   GatewayEventId nextEventId = 1;
   DataId lastScan = 0;
 };
@@ -75,8 +75,8 @@ class GatewayDetector {
   bool detectsHallways() const { return classifier_.has_value(); }
 
  private:
-  GatewayRecord passageRecord(const TrackedGateway& track, GatewayId id) const;
-  GatewayRecord areaRecord(std::size_t area, GatewayId id) const;
+  GatewayRecord passageRecord(const TrackedGateway& track, DetectorGatewayId id) const;
+  GatewayRecord areaRecord(std::size_t area, DetectorGatewayId id) const;
   GatewayEvent event(GatewayEventKind kind, GatewayRecord record, TraversalReport traversal = {});
   void detectPassages(const LaserScan& scan, const Pose2D& robotPose, std::vector<GatewayEvent>& out);
   void detectHallways(const LaserScan& scan, const Pose2D& robotPose, std::vector<GatewayEvent>& out);
@@ -88,9 +88,9 @@ class GatewayDetector {
   std::optional<VlmObserver> observer_;
   HypothesisTracker sequenceTracker_;
   std::unique_ptr<HallwayAreaTracker> areaTracker_;
-  std::map<GatewayId, GatewayId> passageIds_;
-  std::map<std::size_t, GatewayId> areaIds_;
-  GatewayId nextGatewayId_;
+  std::map<PassageTrackId, DetectorGatewayId> passageIds_;
+  std::map<std::size_t, DetectorGatewayId> areaIds_;
+  DetectorGatewayId nextGatewayId_;
   GatewayEventId nextEventId_;
   DataId lastScan_;
 };

@@ -101,7 +101,7 @@ class GatewayDetectorTest : public CppUnit::TestFixture {
     std::size_t detected = 0, traversed = 0;
     for (const GatewayEvent& e : events) {
       CPPUNIT_ASSERT(e.gateway.kind == GatewayKind::NarrowPassage);
-      CPPUNIT_ASSERT_EQUAL(GatewayId(1), e.gateway.id);
+      CPPUNIT_ASSERT_EQUAL(DetectorGatewayId(1), e.gateway.id);
       if (e.kind == GatewayEventKind::Detected) {
         ++detected;
         CPPUNIT_ASSERT_EQUAL(std::string(kNarrowPassageClass), e.gateway.label());

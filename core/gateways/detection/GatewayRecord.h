@@ -18,11 +18,15 @@
 
 #include "core/common/Pose2D.h"
 #include "core/common/SensorData.h"
+#include "core/common/TypedId.h"
 
 namespace rgnav {
 
-using GatewayId = std::uint64_t;
-using GatewayEventId = std::uint64_t;
+// The detector numbers its gateways from 1; the RG Mapping Kernel numbers the gateways it takes
+// in with its own GatewayId. An event's ID is its position in the detector's event buffer
+// (DataBuffer), numbered like every buffer's records.
+using DetectorGatewayId = TypedId<struct DetectorGatewayConcept>;
+using GatewayEventId = DataId;
 
 // Narrow passages (4.2.1) are lines the robot crosses; hallway gateways (turns, junctions,
 // crossings of 4.1) are square areas the robot enters on one side and leaves on another.
@@ -41,7 +45,7 @@ struct ClassProbability {
 };
 
 struct GatewayRecord {
-  GatewayId id = 0;
+  DetectorGatewayId id;
   GatewayKind kind = GatewayKind::NarrowPassage;
   std::vector<ClassProbability> classes;  // the most probable first
   // Narrow passage: P_left, P_right. Hallway area: hidden-left, front-left, front-right,

@@ -155,7 +155,7 @@ std::vector<TrackedGateway> PassageTracker::gateways() const {
   return confirmed;
 }
 
-const TrackedGateway* PassageTracker::find(GatewayId id) const {
+const TrackedGateway* PassageTracker::find(PassageTrackId id) const {
   for (const PassageTrackState& t : state_.tracks)
     if (t.gateway.id == id) return &t.gateway;
   return nullptr;

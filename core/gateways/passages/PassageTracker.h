@@ -32,11 +32,13 @@
 #include <vector>
 
 #include "core/common/Pose2D.h"
+#include "core/common/TypedId.h"
 #include "core/gateways/passages/PassageHypothesis.h"
 
 namespace rgnav {
 
-using GatewayId = std::uint64_t;
+// A track of the tracker; the detector gives a confirmed track its own DetectorGatewayId.
+using PassageTrackId = TypedId<struct PassageTrackConcept>;
 
 struct PassageTrackerConfig {
   double associationDistanceM = 0.6;  // a door seen from its two sides differs by the wall's thickness
@@ -62,7 +64,7 @@ void describe(V& v, PassageTrackerConfig& c) {
 void validate(const PassageTrackerConfig& config);
 
 struct TrackedGateway {
-  GatewayId id = 0;  // from 1, increasing
+  PassageTrackId id;  // from 1, increasing
   Eigen::Vector2d left = Eigen::Vector2d::Zero();   // mean gateway points, in the order of the
   Eigen::Vector2d right = Eigen::Vector2d::Zero();  // first hypothesis (seen from its side)
   double meanConfidence = 0.0;
@@ -80,7 +82,7 @@ struct TrackedGateway {
 };
 
 struct GatewayTraversal {
-  GatewayId gateway = 0;
+  PassageTrackId gateway;
   DataId scanId = 0;                              // the update at which it was crossed
   Eigen::Vector2d crossing = Eigen::Vector2d::Zero();  // where the path crossed the gateway line
   bool fromObservedSide = false;  // from the side the gateway was first seen from to the other
@@ -97,13 +99,13 @@ struct PassageTrackState {
 struct PassageTrackerState {
   std::vector<PassageTrackState> tracks;  // in the order they were started
   std::size_t updates = 0;
-  GatewayId nextId = 1;
+  PassageTrackId nextId{1};
   std::optional<Pose2D> lastPose;  // the robot's pose at the last update
 };
 
 struct TrackerUpdate {
-  std::vector<GatewayId> confirmed;   // gateways confirmed by this update (none superseded)
-  std::vector<GatewayId> superseded;  // gateways confirmed earlier and superseded by this update
+  std::vector<PassageTrackId> confirmed;   // gateways confirmed by this update (none superseded)
+  std::vector<PassageTrackId> superseded;  // gateways confirmed earlier and superseded by this update
   std::vector<GatewayTraversal> traversals;
 };
 
@@ -122,7 +124,7 @@ class PassageTracker {
   std::vector<TrackedGateway> tracks() const;
   std::vector<TrackedGateway> gateways() const;  // the confirmed ones that are not superseded
   // The track of gateway `id`, or nullptr.
-  const TrackedGateway* find(GatewayId id) const;
+  const TrackedGateway* find(PassageTrackId id) const;
   const PassageTrackerState& state() const { return state_; }
 
  private:

@@ -159,13 +159,13 @@ class PassageTrackerTest : public CppUnit::TestFixture {
   void twinConfirmedBeforeTheDoorIsSuperseded() {
     PassageTracker tracker({0.3, 2, 50});
     tracker.update(1, kBesideTwin, {twin(1)});
-    const rgnav::GatewayId twinId = tracker.update(2, kBesideTwin, {twin(2)}).confirmed.at(0);
+    const rgnav::PassageTrackId twinId = tracker.update(2, kBesideTwin, {twin(2)}).confirmed.at(0);
     CPPUNIT_ASSERT_EQUAL(std::size_t(1), tracker.update(3, kThroughTwin, {}).traversals.size());
     tracker.update(4, kBesideTwin, {door(4)});
     const auto update = tracker.update(5, kBesideTwin, {door(5)});
     CPPUNIT_ASSERT_EQUAL(std::size_t(1), update.confirmed.size());
     CPPUNIT_ASSERT(update.confirmed[0] != twinId);
-    CPPUNIT_ASSERT(update.superseded == std::vector<rgnav::GatewayId>{twinId});
+    CPPUNIT_ASSERT(update.superseded == std::vector<rgnav::PassageTrackId>{twinId});
     CPPUNIT_ASSERT(tracker.find(twinId)->superseded);
     CPPUNIT_ASSERT(tracker.update(6, kThroughTwin, {twin(6)}).traversals.empty());
     CPPUNIT_ASSERT(tracker.update(7, kBesideTwin, {twin(7), door(7)}).superseded.empty());  // once
@@ -175,9 +175,9 @@ class PassageTrackerTest : public CppUnit::TestFixture {
   void twinCrossedAsTheDoorIsConfirmedIsNotTraversed() {
     PassageTracker tracker({0.3, 2, 50});
     tracker.update(1, kBesideTwin, {twin(1)});
-    const rgnav::GatewayId twinId = tracker.update(2, kBesideTwin, {twin(2), door(2)}).confirmed.at(0);
+    const rgnav::PassageTrackId twinId = tracker.update(2, kBesideTwin, {twin(2), door(2)}).confirmed.at(0);
     const auto update = tracker.update(3, kThroughTwin, {door(3)});  // crosses the twin as the door is confirmed
-    CPPUNIT_ASSERT(update.superseded == std::vector<rgnav::GatewayId>{twinId});
+    CPPUNIT_ASSERT(update.superseded == std::vector<rgnav::PassageTrackId>{twinId});
     CPPUNIT_ASSERT(update.traversals.empty());
     CPPUNIT_ASSERT_EQUAL(std::size_t(0), tracker.find(twinId)->traversals);
   }

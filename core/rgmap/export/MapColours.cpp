@@ -26,7 +26,7 @@ Rgb fromHsv(double hue, double saturation, double value) {
 }  // namespace
 
 Rgb regionColour(RegionId id) {
-  const double hue = std::fmod(0.08 + double(id % 1000003) * kGoldenRatioConjugate, 1.0);
+  const double hue = std::fmod(0.08 + double(id.value() % 1000003) * kGoldenRatioConjugate, 1.0);
   return fromHsv(hue, kSaturation, kValue);
 }
 

@@ -4,6 +4,7 @@
 #include <nlohmann/json.hpp>
 
 #include "core/common/AtomicFile.h"
+#include "core/common/JsonForms.h"
 #include "core/rgmap/export/Base64.h"
 #include "core/rgmap/export/ExportNumbers.h"
 #include "core/rgmap/export/MapStorage.h"
@@ -30,7 +31,7 @@ Json points(const std::vector<Eigen::Vector2d>& ps) {
 }
 
 // An ID, or null for 0 ("none").
-Json optionalId(std::uint64_t id) { return id == 0 ? Json(nullptr) : Json(id); }
+Json optionalId(RegionId id) { return id.isNone() ? Json(nullptr) : Json(id); }
 
 Json freespace(const FreespaceBitmap& f) {
   return {{"resolution", length(f.resolutionM)},
@@ -137,7 +138,7 @@ Json graph(const RgMapSnapshot& map) {
     edges.push_back({{"kind", e.kind() == EdgeKind::Gateway ? "gateway" : "region"},
                      {"from", toString(e.key.a)},
                      {"to", toString(e.key.b)},
-                     {"through", e.through},
+                     {"through", e.kind() == EdgeKind::Gateway ? Json(e.gateway) : Json(e.region)},
                      {"length", length(e.lengthM)},
                      {"cost", length(e.costM)}});
   return {{"nodes", nodes}, {"edges", edges}};

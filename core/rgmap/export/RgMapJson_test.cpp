@@ -11,6 +11,7 @@
 
 #include "core/common/AtomicFile.h"
 #include "core/common/Errors.h"
+#include "core/common/JsonForms.h"
 #include "core/logs/LogTestFiles.h"
 #include "core/rgmap/export/Base64.h"
 #include "core/rgmap/export/testing/ExportedFloor.h"
@@ -54,8 +55,8 @@ class RgMapJsonTest : public CppUnit::TestFixture {
     CPPUNIT_ASSERT(s["rgMapBytes"].get<std::size_t>() * 5 < s["occupancyGridBytes"].get<std::size_t>());
     CPPUNIT_ASSERT_EQUAL(0.05, s["occupancyGridResolution"].get<double>());
     std::vector<RegionId> ids;
-    for (const json& r : doc_["regions"]) ids.push_back(r["id"]);
-    CPPUNIT_ASSERT((ids == std::vector<RegionId>{1, 2, 3}));
+    for (const json& r : doc_["regions"]) ids.push_back(r["id"].get<RegionId>());
+    CPPUNIT_ASSERT((ids == std::vector<RegionId>{RegionId{1}, RegionId{2}, RegionId{3}}));
   }
 
   void regionsHaveEveryField() {
@@ -64,7 +65,7 @@ class RgMapJsonTest : public CppUnit::TestFixture {
                               "minimumAreaBox", "freespace", "area", "centroid", "centroidInBox", "mainAxes",
                               "mainDirections", "accuracy", "completeness"})
         CPPUNIT_ASSERT_MESSAGE(key, r.contains(key));
-      const Region& region = kernel_->state().regions.at(r["id"]);
+      const Region& region = kernel_->state().regions.at(r["id"].get<RegionId>());
       CPPUNIT_ASSERT_EQUAL(region.scans.size(), r["scanCount"].get<std::size_t>());
       CPPUNIT_ASSERT_EQUAL(kernel_->lineMap(region.id).lineCount(), r["lines"].size());
       CPPUNIT_ASSERT_EQUAL(std::size_t(4), r["lines"][0].size());
@@ -86,10 +87,10 @@ class RgMapJsonTest : public CppUnit::TestFixture {
     const json& gateways = doc_["gateways"];
     CPPUNIT_ASSERT_EQUAL(std::size_t(2), gateways.size());
     const double doorX[] = {4.0, 9.0};
-    const DetectorGatewayId detector[] = {11, 12};
+    const DetectorGatewayId detector[] = {DetectorGatewayId{11}, DetectorGatewayId{12}};
     for (std::size_t k = 0; k < 2; ++k) {
       const json& g = gateways[k];
-      CPPUNIT_ASSERT_EQUAL(GatewayId(k + 1), g["id"].get<GatewayId>());
+      CPPUNIT_ASSERT_EQUAL(GatewayId{k + 1}, g["id"].get<GatewayId>());
       CPPUNIT_ASSERT_EQUAL(detector[k], g["detectorId"].get<DetectorGatewayId>());
       CPPUNIT_ASSERT_EQUAL(std::string("NarrowPassage"), g["kind"].get<std::string>());
       CPPUNIT_ASSERT(g["door"].get<bool>());
@@ -102,7 +103,7 @@ class RgMapJsonTest : public CppUnit::TestFixture {
         CPPUNIT_ASSERT_DOUBLES_EQUAL(doorX[k], p[0].get<double>(), 0.46);
       }
       CPPUNIT_ASSERT_EQUAL(std::size_t(2), g["crossingPoints"].size());
-      const Gateway& state = kernel_->state().gateways.at(k + 1);
+      const Gateway& state = kernel_->state().gateways.at(GatewayId{k + 1});
       for (std::size_t side = 0; side < 2; ++side) {
         CPPUNIT_ASSERT_EQUAL(state.sides[side].region, g["sides"][side]["region"].get<RegionId>());
         CPPUNIT_ASSERT_EQUAL(state.sides[side].crossing, g["sides"][side]["crossing"].get<std::size_t>());
@@ -148,7 +149,7 @@ class RgMapJsonTest : public CppUnit::TestFixture {
     const RgMappingKernel again = rgnav::testing::twoRoomMap();
     CPPUNIT_ASSERT(text_ == exportRgMapJson(snapshotOf(again)));
     CPPUNIT_ASSERT(text_ == exportRgMapJson(snapshotOf(*kernel_)));
-    kernel_->nameRegion(2, "office \"A\"");
+    kernel_->nameRegion(RegionId{2}, "office \"A\"");
     const json named = json::parse(exportRgMapJson(snapshotOf(*kernel_)));
     CPPUNIT_ASSERT_EQUAL(std::string("office \"A\""), named["regions"][1]["name"].get<std::string>());
   }

@@ -52,7 +52,7 @@ cv::Mat renderRgMap(const RgMapSnapshot& map, double resolutionM) {
     for (const LineSegment& s : r.lines) canvas.line(r.toMap(s.start), r.toMap(s.end), kLineColour, 1);
   for (const GatewaySnapshot& g : map.gateways) paintGateway(canvas, g);
   for (const RegionSnapshot& r : map.regions)
-    canvas.number(r.labelPosition(), r.region.id, kDigitScale, kLabelLiftPixels, kLabelColour);
+    canvas.number(r.labelPosition(), r.region.id.value(), kDigitScale, kLabelLiftPixels, kLabelColour);
   return canvas.image();
 }
 

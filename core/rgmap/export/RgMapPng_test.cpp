@@ -69,8 +69,8 @@ class RgMapPngTest : public CppUnit::TestFixture {
         for (int dc = -1; dc <= 1; ++dc)
           CPPUNIT_ASSERT(pixel(image_, at + Eigen::Vector2i(dc, dr)) == regionColour(r.region.id));
     }
-    CPPUNIT_ASSERT(regionColour(1) != regionColour(2) && regionColour(2) != regionColour(3) &&
-                   regionColour(1) != regionColour(3));
+    CPPUNIT_ASSERT(regionColour(RegionId{1}) != regionColour(RegionId{2}) && regionColour(RegionId{2}) != regionColour(RegionId{3}) &&
+                   regionColour(RegionId{1}) != regionColour(RegionId{3}));
   }
 
   void doorsAreDrawnOnTheDoorLines() {

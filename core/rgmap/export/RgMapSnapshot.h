@@ -42,7 +42,7 @@ struct RgMapSnapshot {
   std::size_t scanCount = 0;              // aligned scans the map holds
   DataId lastScanId = 0;
   RgMapEventId lastEventId = 0;
-  RegionId currentRegion = 0;  // 0 before the first input
+  RegionId currentRegion;  // 0 before the first input
 };
 
 // Throws what RgMappingKernel::lineMap and description throw for a region that cannot be

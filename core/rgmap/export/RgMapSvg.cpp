@@ -66,7 +66,7 @@ std::string freespacePath(const FreespaceBitmap& f) {
 
 std::string region(const RegionSnapshot& r) {
   const Pose2D& frame = r.region.frame;
-  std::string out = "<g class=\"region\"" + attr("id", "region-" + std::to_string(r.region.id)) +
+  std::string out = "<g class=\"region\"" + attr("id", "region-" + std::to_string(r.region.id.value())) +
                     attr("transform", "translate(" + xy({frame.x, frame.y}) + ") rotate(" +
                                           decimalText(-frame.theta * 180.0 / M_PI, 2) + ")") +
                     ">\n";
@@ -99,7 +99,7 @@ std::string graph(const RgMapSnapshot& map) {
 std::string gateway(const GatewaySnapshot& s) {
   const Gateway& g = s.gateway;
   const std::vector<Eigen::Vector2d>& corners = s.inMap.gatewayPoints;
-  std::string out = "<g class=\"gateway\"" + attr("id", "gateway-" + std::to_string(g.id)) + ">\n";
+  std::string out = "<g class=\"gateway\"" + attr("id", "gateway-" + std::to_string(g.id.value())) + ">\n";
   const std::string style = attr("stroke", hexColour(gatewayColour(g.door(), g.neutralised))) +
                             attr("stroke-width", num(kGatewayWidthM)) +
                             (g.neutralised ? attr("stroke-dasharray", num(2 * kGatewayWidthM)) : "");
@@ -117,7 +117,7 @@ std::string gateway(const GatewaySnapshot& s) {
   Eigen::Vector2d centre = Eigen::Vector2d::Zero();
   for (const Eigen::Vector2d& p : corners) centre += p / double(corners.size());
   std::string label = "G";
-  label += std::to_string(g.id);
+  label += std::to_string(g.id.value());
   if (!g.record.classes.empty()) append(label, {" ", g.record.label()});
   out += "<text class=\"gateway-label\"" + attr("x", x(centre.x())) + attr("y", y(centre.y() - 2 * kGatewayFontM)) +
          attr("font-size", num(kGatewayFontM)) + " text-anchor=\"middle\">" + escaped(label) + "</text>\n";
@@ -126,7 +126,7 @@ std::string gateway(const GatewaySnapshot& s) {
 
 std::string regionLabel(const RegionSnapshot& r) {
   const Eigen::Vector2d at = r.labelPosition();
-  const std::string text = std::to_string(r.region.id) + (r.region.name.empty() ? "" : " " + r.region.name);
+  const std::string text = std::to_string(r.region.id.value()) + (r.region.name.empty() ? "" : " " + r.region.name);
   return "<text class=\"region-label\"" + attr("x", x(at.x())) + attr("y", y(at.y())) +
          attr("font-size", num(kRegionFontM)) + " text-anchor=\"middle\" dominant-baseline=\"middle\">" +
          escaped(text) + "</text>\n";

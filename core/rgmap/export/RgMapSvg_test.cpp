@@ -42,8 +42,8 @@ class RgMapSvgTest : public CppUnit::TestFixture {
     CPPUNIT_ASSERT_EQUAL(std::size_t(3), count(svg_, "class=\"region\""));
     CPPUNIT_ASSERT_EQUAL(std::size_t(3), count(svg_, "class=\"lines\""));
     CPPUNIT_ASSERT_EQUAL(std::size_t(3), count(svg_, "class=\"region-label\""));
-    for (RegionId id : {1, 2, 3}) {
-      CPPUNIT_ASSERT(svg_.find("id=\"region-" + std::to_string(id) + "\"") != std::string::npos);
+    for (const RegionId id : {RegionId{1}, RegionId{2}, RegionId{3}}) {
+      CPPUNIT_ASSERT(svg_.find("id=\"region-" + std::to_string(id.value()) + "\"") != std::string::npos);
       CPPUNIT_ASSERT(svg_.find("fill=\"" + hexColour(regionColour(id)) + "\"") != std::string::npos);
     }
     CPPUNIT_ASSERT_EQUAL(std::size_t(1), count(svg_, "class=\"scale-bar\""));
@@ -68,7 +68,7 @@ class RgMapSvgTest : public CppUnit::TestFixture {
   }
 
   void namesAreEscaped() {
-    kernel_->nameRegion(2, "R&D <lab>");
+    kernel_->nameRegion(RegionId{2}, "R&D <lab>");
     const std::string svg = exportRgMapSvg(snapshotOf(*kernel_));
     CPPUNIT_ASSERT(svg.find(">2 R&amp;D &lt;lab&gt;</text>") != std::string::npos);
     CPPUNIT_ASSERT_EQUAL(std::string(), rgnav::testing::unbalancedTags(svg));

@@ -68,7 +68,7 @@ void EdgeCostTable::restoreTraversal(const EdgeKey& edge, const TraversalStats& 
 }
 
 void EdgeCostTable::restoreDoorOffset(GatewayId g, double offsetM) {
-  requireNonNegative(offsetM, "restored door offset of gateway " + std::to_string(g));
+  requireNonNegative(offsetM, "restored door offset of gateway " + std::to_string(g.value()));
   doorOffsets_[g] = offsetM;
 }
 

@@ -18,8 +18,9 @@ using rgnav::GatewaySide;
 
 namespace {
 
-const EdgeKey kRegionEdge = rgnav::edgeKey(EdgeKind::Region, {3, GatewaySide::B}, {1, GatewaySide::A});
-const EdgeKey kDoorEdge = rgnav::gatewayEdgeKey(7);
+constexpr rgnav::GatewayId kFirst{1}, kThird{3}, kDoor{7};
+const EdgeKey kRegionEdge = rgnav::edgeKey(EdgeKind::Region, {kThird, GatewaySide::B}, {kFirst, GatewaySide::A});
+const EdgeKey kDoorEdge = rgnav::gatewayEdgeKey(kDoor);
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
 EdgeCostConfig withMemory(std::size_t memory) {
@@ -47,9 +48,9 @@ class EdgeCostTableTest : public CppUnit::TestFixture {
 
  public:
   void keysAreOrdered() {
-    CPPUNIT_ASSERT(kRegionEdge.a == (rgnav::NodeKey{1, GatewaySide::A}));
-    CPPUNIT_ASSERT(kRegionEdge == rgnav::edgeKey(EdgeKind::Region, {1, GatewaySide::A}, {3, GatewaySide::B}));
-    CPPUNIT_ASSERT(kDoorEdge != rgnav::edgeKey(EdgeKind::Region, {7, GatewaySide::A}, {7, GatewaySide::B}));
+    CPPUNIT_ASSERT(kRegionEdge.a == (rgnav::NodeKey{kFirst, GatewaySide::A}));
+    CPPUNIT_ASSERT(kRegionEdge == rgnav::edgeKey(EdgeKind::Region, {kFirst, GatewaySide::A}, {kThird, GatewaySide::B}));
+    CPPUNIT_ASSERT(kDoorEdge != rgnav::edgeKey(EdgeKind::Region, {kDoor, GatewaySide::A}, {kDoor, GatewaySide::B}));
     CPPUNIT_ASSERT_EQUAL(std::string("region edge G1A-G3B"), rgnav::toString(kRegionEdge));
   }
 
@@ -83,23 +84,23 @@ class EdgeCostTableTest : public CppUnit::TestFixture {
     EdgeCostTable t;
     t.recordTraversal(kRegionEdge, 3.0, 0.0);
     CPPUNIT_ASSERT_DOUBLES_EQUAL(8.0, t.cost(kRegionEdge, 8.0, false), 1e-12);
-    for (int i = 0; i < 5; ++i) t.recordDoorState(7, true);
+    for (int i = 0; i < 5; ++i) t.recordDoorState(kDoor, true);
     t.recordTraversal(kDoorEdge, 0.2, 0.0);
     CPPUNIT_ASSERT_DOUBLES_EQUAL(1.0, t.cost(kDoorEdge, 1.0, true), 1e-12);
   }
 
   void doorBlockedThenOpen() {
     EdgeCostTable t;  // +30 m blocked, -30 m open
-    t.recordDoorState(7, false);
+    t.recordDoorState(kDoor, false);
     CPPUNIT_ASSERT_DOUBLES_EQUAL(31.0, t.cost(kDoorEdge, 1.0, true), 1e-12);
-    t.recordDoorState(7, false);
+    t.recordDoorState(kDoor, false);
     CPPUNIT_ASSERT_DOUBLES_EQUAL(61.0, t.cost(kDoorEdge, 1.0, true), 1e-12);
-    t.recordDoorState(7, true);
+    t.recordDoorState(kDoor, true);
     CPPUNIT_ASSERT_DOUBLES_EQUAL(31.0, t.cost(kDoorEdge, 1.0, true), 1e-12);
-    t.recordDoorState(7, true);
-    t.recordDoorState(7, true);
+    t.recordDoorState(kDoor, true);
+    t.recordDoorState(kDoor, true);
     CPPUNIT_ASSERT_DOUBLES_EQUAL(1.0, t.cost(kDoorEdge, 1.0, true), 1e-12);
-    t.recordDoorState(7, false);  // open twice more did not bank credit
+    t.recordDoorState(kDoor, false);  // open twice more did not bank credit
     CPPUNIT_ASSERT_DOUBLES_EQUAL(31.0, t.cost(kDoorEdge, 1.0, true), 1e-12);
     // The offset belongs to the door edge only.
     CPPUNIT_ASSERT_DOUBLES_EQUAL(1.0, t.cost(kDoorEdge, 1.0, false), 1e-12);
@@ -108,9 +109,9 @@ class EdgeCostTableTest : public CppUnit::TestFixture {
   void doorOffsetAddsToMeasuredBase() {
     EdgeCostTable t;
     t.recordTraversal(kDoorEdge, 1.5, 0.0);
-    t.recordDoorState(7, false);
+    t.recordDoorState(kDoor, false);
     CPPUNIT_ASSERT_DOUBLES_EQUAL(31.5, t.cost(kDoorEdge, 1.0, true), 1e-12);
-    t.recordDoorState(7, true);
+    t.recordDoorState(kDoor, true);
     CPPUNIT_ASSERT_DOUBLES_EQUAL(1.5, t.cost(kDoorEdge, 1.0, true), 1e-12);
   }
 
@@ -128,7 +129,7 @@ class EdgeCostTableTest : public CppUnit::TestFixture {
     EdgeCostTable learned(withMemory(3));
     learned.recordTraversal(kRegionEdge, 6.0, 0.0);
     learned.recordTraversal(kRegionEdge, 7.0, 0.0);
-    learned.recordDoorState(7, false);
+    learned.recordDoorState(kDoor, false);
     EdgeCostTable restored(withMemory(3));
     for (const auto& [key, stats] : learned.traversals()) restored.restoreTraversal(key, stats);
     for (const auto& [g, offset] : learned.doorOffsets()) restored.restoreDoorOffset(g, offset);
@@ -139,8 +140,8 @@ class EdgeCostTableTest : public CppUnit::TestFixture {
     CPPUNIT_ASSERT_DOUBLES_EQUAL(learned.cost(kRegionEdge, 5.0, false), restored.cost(kRegionEdge, 5.0, false), 1e-12);
     CPPUNIT_ASSERT_THROW(restored.restoreTraversal(kRegionEdge, {5.0, 0}), rgnav::InvalidArgumentError);
     CPPUNIT_ASSERT_THROW(restored.restoreTraversal(kRegionEdge, {-1.0, 2}), rgnav::InvalidArgumentError);
-    CPPUNIT_ASSERT_THROW(restored.restoreDoorOffset(7, -0.1), rgnav::InvalidArgumentError);
-    CPPUNIT_ASSERT_THROW(restored.restoreDoorOffset(7, kNaN), rgnav::InvalidArgumentError);
+    CPPUNIT_ASSERT_THROW(restored.restoreDoorOffset(kDoor, -0.1), rgnav::InvalidArgumentError);
+    CPPUNIT_ASSERT_THROW(restored.restoreDoorOffset(kDoor, kNaN), rgnav::InvalidArgumentError);
   }
 
   void badConfigIsConfigError() {

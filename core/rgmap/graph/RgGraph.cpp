@@ -25,9 +25,9 @@ struct Structure {
 
 void checkCrossingPoint(const GatewaySpec& g, const CrossingPointSpec& c, const char* side,
                         const std::map<RegionId, std::vector<std::size_t>>& regionNodes) {
-  const std::string name = "gateway " + std::to_string(g.id) + " side " + side;
+  const std::string name = "gateway " + std::to_string(g.id.value()) + " side " + side;
   if (!regionNodes.contains(c.region))
-    throw InvalidArgumentError(name + " lies in region " + std::to_string(c.region) + ", which is not listed");
+    throw InvalidArgumentError(name + " lies in region " + std::to_string(c.region.value()) + ", which is not listed");
   if (!c.position.allFinite()) throw InvalidArgumentError(name + " has a non-finite position");
 }
 
@@ -40,7 +40,7 @@ void addGateway(Structure& s, const GatewaySpec& g) {
     s.nodes.push_back({{g.id, side}, c->region, c->position, g.isDoor});
   }
   const std::size_t a = s.nodes.size() - 2;
-  s.edges.push_back({gatewayEdgeKey(g.id), a, a + 1, g.id, 0.0, 0.0});
+  s.edges.push_back({gatewayEdgeKey(g.id), a, a + 1, g.id, RegionId{}, 0.0, 0.0});
 }
 
 // Appends an edge between every pair of crossing points in the same region.
@@ -49,7 +49,7 @@ void addRegionEdges(Structure& s) {
     for (std::size_t i = 0; i < members.size(); ++i) {
       for (std::size_t j = i + 1; j < members.size(); ++j) {
         const std::size_t u = members[i], v = members[j];
-        s.edges.push_back({edgeKey(EdgeKind::Region, s.nodes[u].key, s.nodes[v].key), u, v, region, 0.0, 0.0});
+        s.edges.push_back({edgeKey(EdgeKind::Region, s.nodes[u].key, s.nodes[v].key), u, v, GatewayId{}, region, 0.0, 0.0});
       }
     }
   }
@@ -73,7 +73,7 @@ Structure assemble(const RgGraphSpec& spec) {
   s.regions = spec.regions;
   std::sort(s.regions.begin(), s.regions.end());
   if (const auto d = std::adjacent_find(s.regions.begin(), s.regions.end()); d != s.regions.end())
-    throw InvalidArgumentError("region " + std::to_string(*d) + " is listed twice");
+    throw InvalidArgumentError("region " + std::to_string(d->value()) + " is listed twice");
   for (const RegionId r : s.regions) s.regionNodes[r];
 
   std::vector<const GatewaySpec*> gateways;
@@ -81,7 +81,7 @@ Structure assemble(const RgGraphSpec& spec) {
   std::sort(gateways.begin(), gateways.end(), [](const auto* a, const auto* b) { return a->id < b->id; });
   for (std::size_t i = 0; i < gateways.size(); ++i) {
     if (i > 0 && gateways[i - 1]->id == gateways[i]->id)
-      throw InvalidArgumentError("gateway " + std::to_string(gateways[i]->id) + " is listed twice");
+      throw InvalidArgumentError("gateway " + std::to_string(gateways[i]->id.value()) + " is listed twice");
     addGateway(s, *gateways[i]);
   }
   addRegionEdges(s);
@@ -111,7 +111,7 @@ void RgGraph::build(const RgGraphSpec& spec) {
 
 const std::vector<std::size_t>& RgGraph::nodesInRegion(RegionId r) const {
   const auto it = regionNodes_.find(r);
-  if (it == regionNodes_.end()) throw InvalidArgumentError("region " + std::to_string(r) + " is not in the RG graph");
+  if (it == regionNodes_.end()) throw InvalidArgumentError("region " + std::to_string(r.value()) + " is not in the RG graph");
   return it->second;
 }
 
@@ -137,9 +137,9 @@ void RgGraph::recordTraversal(const EdgeKey& edge, double lengthM, double timeS)
 
 void RgGraph::recordDoorState(GatewayId g, bool traversable) {
   const auto i = findEdge(gatewayEdgeKey(g));
-  if (!i) throw InvalidArgumentError("gateway " + std::to_string(g) + " is not in the RG graph");
+  if (!i) throw InvalidArgumentError("gateway " + std::to_string(g.value()) + " is not in the RG graph");
   RgEdge& e = edges_[*i];
-  if (!isDoorEdge(e, nodes_)) throw InvalidArgumentError("gateway " + std::to_string(g) + " is not a door");
+  if (!isDoorEdge(e, nodes_)) throw InvalidArgumentError("gateway " + std::to_string(g.value()) + " is not a door");
   costs_.recordDoorState(g, traversable);
   e.costM = costs_.cost(e.key, e.lengthM, true);
 }

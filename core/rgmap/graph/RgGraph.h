@@ -28,12 +28,12 @@
 namespace rgnav {
 
 struct CrossingPointSpec {
-  RegionId region = 0;
+  RegionId region;
   Eigen::Vector2d position = Eigen::Vector2d::Zero();  // global frame, metres
 };
 
 struct GatewaySpec {
-  GatewayId id = 0;
+  GatewayId id;
   bool isDoor = false;
   CrossingPointSpec sideA;  // the sides must keep their order across rebuilds
   CrossingPointSpec sideB;
@@ -46,7 +46,7 @@ struct RgGraphSpec {
 
 struct RgNode {
   NodeKey key;
-  RegionId region = 0;
+  RegionId region;
   Eigen::Vector2d position = Eigen::Vector2d::Zero();
   bool door = false;  // its gateway is a door
 
@@ -57,7 +57,8 @@ struct RgEdge {
   EdgeKey key;
   std::size_t from = 0;      // index in nodes() of key.a
   std::size_t to = 0;        // index in nodes() of key.b
-  std::uint64_t through = 0; // the gateway's ID for a gateway edge, the region's for a region edge
+  GatewayId gateway;         // a gateway edge: the gateway it goes through; a region edge: none
+  RegionId region;           // a region edge: the region it goes through; a gateway edge: none
   double lengthM = 0.0;      // Euclidean length
   double costM = 0.0;        // current cost, >= lengthM
 

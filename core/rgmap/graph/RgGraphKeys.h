@@ -10,10 +10,13 @@
 #include <cstdint>
 #include <string>
 
+#include "core/common/TypedId.h"
+
 namespace rgnav {
 
-using RegionId = std::uint64_t;
-using GatewayId = std::uint64_t;
+// The kernel's numbering of regions and of the gateways it took in (see TypedId.h).
+using RegionId = TypedId<struct RegionConcept>;
+using GatewayId = TypedId<struct GatewayConcept>;
 
 // The two sides of a gateway; each has one crossing point.
 enum class GatewaySide : std::uint8_t { A = 0, B = 1 };
@@ -23,7 +26,7 @@ enum class GatewaySide : std::uint8_t { A = 0, B = 1 };
 enum class EdgeKind : std::uint8_t { Gateway = 0, Region = 1 };
 
 struct NodeKey {
-  GatewayId gateway = 0;
+  GatewayId gateway;
   GatewaySide side = GatewaySide::A;
 
   auto operator<=>(const NodeKey&) const = default;
@@ -50,7 +53,7 @@ inline EdgeKey gatewayEdgeKey(GatewayId g) {
 
 // "G7A", for messages.
 inline std::string toString(const NodeKey& k) {
-  std::string out = std::to_string(k.gateway);  // appended, not "G" + ...: GCC 12 -Wrestrict false alarm
+  std::string out = std::to_string(k.gateway.value());  // appended, not "G" + ...: GCC 12 -Wrestrict false alarm
   out.insert(out.begin(), 'G');
   out += k.side == GatewaySide::A ? 'A' : 'B';
   return out;

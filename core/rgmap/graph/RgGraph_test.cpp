@@ -14,8 +14,10 @@
 #include "core/rgmap/graph/testing/SmallFloor.h"
 
 using rgnav::EdgeKind;
+using rgnav::GatewayId;
 using rgnav::GatewaySide;
 using rgnav::NodeKey;
+using rgnav::RegionId;
 using rgnav::RgGraph;
 using rgnav::RgGraphSpec;
 using namespace rgnav::testing;
@@ -82,7 +84,7 @@ class RgGraphTest : public CppUnit::TestFixture {
     CPPUNIT_ASSERT_EQUAL(std::size_t(2), g.nodesInRegion(kOffice).size());
     CPPUNIT_ASSERT_EQUAL(std::size_t(3), g.nodesInRegion(kLobby).size());
     for (const std::size_t i : g.nodesInRegion(kLobby)) CPPUNIT_ASSERT_EQUAL(kLobby, g.nodes()[i].region);
-    CPPUNIT_ASSERT(!g.findNode({99, A}).has_value());
+    CPPUNIT_ASSERT(!g.findNode({GatewayId{99}, A}).has_value());
   }
 
   void edgesThroughGatewaysAndRegions() {
@@ -96,9 +98,9 @@ class RgGraphTest : public CppUnit::TestFixture {
       CPPUNIT_ASSERT(u.key == e.key.a && v.key == e.key.b);
       if (e.kind() == EdgeKind::Gateway) {
         ++gatewayEdges;
-        CPPUNIT_ASSERT(u.gateway() == e.through && v.gateway() == e.through);
+        CPPUNIT_ASSERT(u.gateway() == e.gateway && v.gateway() == e.gateway && e.region.isNone());
       } else {
-        CPPUNIT_ASSERT(u.region == e.through && v.region == e.through);
+        CPPUNIT_ASSERT(u.region == e.region && v.region == e.region && e.gateway.isNone());
       }
       CPPUNIT_ASSERT_DOUBLES_EQUAL((u.position - v.position).norm(), e.lengthM, 1e-12);
       CPPUNIT_ASSERT_DOUBLES_EQUAL(e.lengthM, e.costM, 1e-12);
@@ -108,7 +110,7 @@ class RgGraphTest : public CppUnit::TestFixture {
     CPPUNIT_ASSERT_EQUAL(std::size_t(5), gatewayEdges);
     const auto& hall = edge(g, regionEdge({kHallLobby, A}, {kHallOffice, A}));  // either order
     CPPUNIT_ASSERT_DOUBLES_EQUAL(std::hypot(16.5, 0.5), hall.lengthM, 1e-12);
-    CPPUNIT_ASSERT_EQUAL(kHallway, hall.through);
+    CPPUNIT_ASSERT_EQUAL(kHallway, hall.region);
     CPPUNIT_ASSERT(!g.findEdge(regionEdge({kHallOffice, A}, {kHallLab, B})).has_value());  // different regions
     CPPUNIT_ASSERT_EQUAL(std::size_t(3), g.edgesAt(*g.findNode({kHallOffice, A})).size());  // gateway + 2 in hallway
   }
@@ -118,7 +120,7 @@ class RgGraphTest : public CppUnit::TestFixture {
     const auto& through = edge(g, rgnav::gatewayEdgeKey(kLobbyFalse));
     const auto& around = edge(g, regionEdge({kLobbyFalse, A}, {kLobbyFalse, B}));
     CPPUNIT_ASSERT(g.nodes()[through.from].region == kLobby && g.nodes()[through.to].region == kLobby);
-    CPPUNIT_ASSERT_EQUAL(kLobby, around.through);
+    CPPUNIT_ASSERT_EQUAL(kLobby, around.region);
     CPPUNIT_ASSERT_DOUBLES_EQUAL(1.0, through.lengthM, 1e-12);
     CPPUNIT_ASSERT_DOUBLES_EQUAL(1.0, around.lengthM, 1e-12);
     // Each of its crossing points: the gateway edge and the two other lobby crossing points.
@@ -127,13 +129,13 @@ class RgGraphTest : public CppUnit::TestFixture {
 
   void regionWithoutGateways() {
     RgGraphSpec spec = smallFloor();
-    spec.regions.push_back(5);
+    spec.regions.push_back(RegionId{5});
     RgGraph g;
     g.build(spec);
-    CPPUNIT_ASSERT(g.hasRegion(5));
-    CPPUNIT_ASSERT(g.nodesInRegion(5).empty());
-    CPPUNIT_ASSERT(!g.hasRegion(6));
-    CPPUNIT_ASSERT_THROW(g.nodesInRegion(6), rgnav::InvalidArgumentError);
+    CPPUNIT_ASSERT(g.hasRegion(RegionId{5}));
+    CPPUNIT_ASSERT(g.nodesInRegion(RegionId{5}).empty());
+    CPPUNIT_ASSERT(!g.hasRegion(RegionId{6}));
+    CPPUNIT_ASSERT_THROW(g.nodesInRegion(RegionId{6}), rgnav::InvalidArgumentError);
     RgGraph empty;
     CPPUNIT_ASSERT(empty.nodes().empty() && empty.edges().empty() && empty.regions().empty());
   }
@@ -221,7 +223,7 @@ class RgGraphTest : public CppUnit::TestFixture {
     };
     bad([](RgGraphSpec& s) { s.regions.push_back(kOffice); });
     bad([](RgGraphSpec& s) { s.gateways.push_back(s.gateways.front()); });
-    bad([](RgGraphSpec& s) { s.gateways.front().sideB.region = 42; });
+    bad([](RgGraphSpec& s) { s.gateways.front().sideB.region = RegionId{42}; });
     bad([](RgGraphSpec& s) { std::erase(s.regions, kLobby); });
     bad([](RgGraphSpec& s) { s.gateways.front().sideA.position.y() = std::numeric_limits<double>::infinity(); });
   }
@@ -231,7 +233,7 @@ class RgGraphTest : public CppUnit::TestFixture {
     CPPUNIT_ASSERT_THROW(g.recordTraversal(regionEdge({kHallOffice, A}, {kHallLab, B}), 1.0, 0.0),
                          rgnav::InvalidArgumentError);
     CPPUNIT_ASSERT_THROW(g.recordTraversal(rgnav::gatewayEdgeKey(kHallLab), -1.0, 0.0), rgnav::InvalidArgumentError);
-    CPPUNIT_ASSERT_THROW(g.recordDoorState(99, false), rgnav::InvalidArgumentError);
+    CPPUNIT_ASSERT_THROW(g.recordDoorState(GatewayId{99}, false), rgnav::InvalidArgumentError);
     CPPUNIT_ASSERT_THROW(g.recordDoorState(kHallLab, false), rgnav::InvalidArgumentError);  // not a door
     CPPUNIT_ASSERT(g.costs().traversals().empty() && g.costs().doorOffsets().empty());
   }

@@ -18,7 +18,7 @@ constexpr std::size_t kNone = std::numeric_limits<std::size_t>::max();
 
 void checkPlace(const RgGraph& graph, const RgPlace& place, const char* name) {
   if (!graph.hasRegion(place.region))
-    throw InvalidArgumentError(std::string(name) + " region " + std::to_string(place.region) +
+    throw InvalidArgumentError(std::string(name) + " region " + std::to_string(place.region.value()) +
                                " is not in the RG graph");
   if (!place.position.allFinite()) throw InvalidArgumentError(std::string(name) + " position is not finite");
 }
@@ -42,8 +42,8 @@ class AStar {
       if (u == goalIndex_) return path();
       expand(u);
     }
-    throw NotAvailableError("no path in the RG graph from region " + std::to_string(start_.region) + " to region " +
-                            std::to_string(goal_.region));
+    throw NotAvailableError("no path in the RG graph from region " + std::to_string(start_.region.value()) + " to region " +
+                            std::to_string(goal_.region.value()));
   }
 
  private:

@@ -15,7 +15,7 @@
 namespace rgnav {
 
 struct RgPlace {
-  RegionId region = 0;
+  RegionId region;
   Eigen::Vector2d position = Eigen::Vector2d::Zero();  // global frame, metres
 };
 

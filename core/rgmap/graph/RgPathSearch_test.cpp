@@ -17,8 +17,10 @@
 
 using Eigen::Vector2d;
 using rgnav::EdgeKind;
+using rgnav::GatewayId;
 using rgnav::GatewaySide;
 using rgnav::NodeKey;
+using rgnav::RegionId;
 using rgnav::RgGraph;
 using rgnav::RgGraphSpec;
 using rgnav::RgPath;
@@ -118,7 +120,7 @@ RgGraph randomGraph(std::mt19937& random) {
   std::uniform_real_distribution<double> coordinate(0.0, 30.0), offset(-0.6, 0.6), unit(0.0, 1.0);
   RgGraphSpec spec;
   const int regions = regionCount(random);
-  for (int r = 0; r < regions; ++r) spec.regions.push_back(100 + 7 * r);
+  for (int r = 0; r < regions; ++r) spec.regions.push_back(RegionId(100 + 7 * r));
   std::uniform_int_distribution<std::size_t> pick(0, spec.regions.size() - 1);
   const int gateways = gatewayCount(random);
   for (int i = 0; i < gateways; ++i) {
@@ -238,21 +240,21 @@ class RgPathSearchTest : public CppUnit::TestFixture {
 
   void noPathIsNotAvailable() {
     RgGraphSpec spec = smallFloor();
-    spec.regions.push_back(5);
-    spec.gateways.push_back({20, true, {5, {40.0, 0.0}}, {5, {41.0, 0.0}}});  // only within region 5
+    spec.regions.push_back(RegionId{5});
+    spec.gateways.push_back({GatewayId{20}, true, {RegionId{5}, {40.0, 0.0}}, {RegionId{5}, {41.0, 0.0}}});  // only within region 5
     const RgGraph g = graphOf(spec);
-    CPPUNIT_ASSERT_THROW(rgnav::findPath(g, {kHallway, {1.0, 1.0}}, {5, {40.0, 2.0}}), rgnav::NotAvailableError);
-    CPPUNIT_ASSERT_THROW(rgnav::findPath(g, {5, {40.0, 2.0}}, {kOffice, {2.0, 6.0}}), rgnav::NotAvailableError);
-    CPPUNIT_ASSERT_DOUBLES_EQUAL(2.0, rgnav::findPath(g, {5, {40.0, 2.0}}, {5, {40.0, 4.0}}).costM, 1e-12);
+    CPPUNIT_ASSERT_THROW(rgnav::findPath(g, {kHallway, {1.0, 1.0}}, {RegionId{5}, {40.0, 2.0}}), rgnav::NotAvailableError);
+    CPPUNIT_ASSERT_THROW(rgnav::findPath(g, {RegionId{5}, {40.0, 2.0}}, {kOffice, {2.0, 6.0}}), rgnav::NotAvailableError);
+    CPPUNIT_ASSERT_DOUBLES_EQUAL(2.0, rgnav::findPath(g, {RegionId{5}, {40.0, 2.0}}, {RegionId{5}, {40.0, 4.0}}).costM, 1e-12);
   }
 
   void unknownRegionIsInvalidArgument() {
     const RgGraph g = graphOf(smallFloor());
-    CPPUNIT_ASSERT_THROW(rgnav::findPath(g, {99, {0.0, 0.0}}, {kOffice, {2.0, 6.0}}), rgnav::InvalidArgumentError);
-    CPPUNIT_ASSERT_THROW(rgnav::findPath(g, {kOffice, {2.0, 6.0}}, {99, {0.0, 0.0}}), rgnav::InvalidArgumentError);
+    CPPUNIT_ASSERT_THROW(rgnav::findPath(g, {RegionId{99}, {0.0, 0.0}}, {kOffice, {2.0, 6.0}}), rgnav::InvalidArgumentError);
+    CPPUNIT_ASSERT_THROW(rgnav::findPath(g, {kOffice, {2.0, 6.0}}, {RegionId{99}, {0.0, 0.0}}), rgnav::InvalidArgumentError);
     const double nan = std::numeric_limits<double>::quiet_NaN();
     CPPUNIT_ASSERT_THROW(rgnav::findPath(g, {kOffice, {nan, 6.0}}, {kLab, {9.0, 6.0}}), rgnav::InvalidArgumentError);
-    CPPUNIT_ASSERT_THROW(rgnav::findPath(RgGraph(), {1, {0.0, 0.0}}, {1, {1.0, 0.0}}), rgnav::InvalidArgumentError);
+    CPPUNIT_ASSERT_THROW(rgnav::findPath(RgGraph(), {RegionId{1}, {0.0, 0.0}}, {RegionId{1}, {1.0, 0.0}}), rgnav::InvalidArgumentError);
   }
 
   void aStarEqualsDijkstraOnRandomGraphs() {

@@ -169,7 +169,7 @@ LocalWay wayAround(const RgMapState& state, GatewayId id, const Shape& shape, co
   LocalWay way(localGrid(state, centre, radius + config.scanMarginM, config.cellSizeM), centre, radius);
   way.block(shape);
   for (const auto& [other, g] : state.gateways) {
-    if (other == id || !g.door() || g.neutralised || g.sides[kSideA].region == 0 || g.sides[kSideB].region == 0)
+    if (other == id || !g.door() || g.neutralised || g.sides[kSideA].region == RegionId{} || g.sides[kSideB].region == RegionId{})
       continue;
     const Slab slab(g, config);
     if ((slab.mid - centre).norm() <= radius + slab.halfLength + slab.halfDepth) way.block(slab);

@@ -19,7 +19,7 @@ TourWorld roomWithPillar() {
   TourWorld w;
   w.walls = boxWalls({4, 3}, 0.0, 8, 6);
   for (const Wall& side : boxWalls({1.5, 3}, 0.0, 0.4, 0.4)) w.walls.push_back(side);
-  w.doors = {{31, {0, 3}, {1.3, 3}, DoorReports::All}};
+  w.doors = {{DetectorGatewayId{31}, {0, 3}, {1.3, 3}, DoorReports::All}};
   return w;
 }
 

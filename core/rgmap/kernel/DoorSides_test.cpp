@@ -16,7 +16,7 @@ using namespace rgnav;
 
 namespace {
 
-constexpr RegionId kRegion = 1;
+constexpr RegionId kRegion{1};
 const GatewaySegment kDoor{{0.0, 0.0}, {1.0, 0.0}};  // left of it: y > 0
 constexpr double kNoReturnFreeRangeM = 3.0;           // a beam without return sees this far
 

@@ -15,7 +15,7 @@ void requireFinite(const Pose2D& p, const std::string& what) {
 
 void validateGatewayEvent(const GatewayEvent& event) {
   const GatewayRecord& r = event.gateway;
-  const std::string what = "gateway event " + std::to_string(event.id) + " (gateway " + std::to_string(r.id) + ")";
+  const std::string what = "gateway event " + std::to_string(event.id) + " (gateway " + std::to_string(r.id.value()) + ")";
   if (r.classes.empty()) throw InvalidArgumentError(what + ": no class label");
   const std::size_t points = r.kind == GatewayKind::NarrowPassage ? 2 : 4;
   if (r.gatewayPoints.size() != points || r.crossingPoints.size() != points)

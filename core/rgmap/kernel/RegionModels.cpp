@@ -49,7 +49,7 @@ std::vector<GatewaySegment> otherDoorLines(const RgMapState& state, const Region
                                  [&](const GatewaySideRef& side) { return side.region == region.id; });
     if (!gateway.door() || gateway.neutralised || own) continue;
     const bool attached = std::any_of(gateway.sides.begin(), gateway.sides.end(),
-                                      [](const GatewaySideRef& side) { return side.region != 0; });
+                                      [](const GatewaySideRef& side) { return !side.region.isNone(); });
     if (!attached) {
       const PlacedGateway inMap = placeGateway(gateway);
       const GatewaySegment line{inMap.gatewayPoints[0], inMap.gatewayPoints[1]};
@@ -65,7 +65,7 @@ std::vector<GatewaySegment> otherAreaLines(const RgMapState& state, const Region
   std::vector<GatewaySegment> out;
   for (const auto& [id, gateway] : state.gateways) {
     const RegionId a = gateway.sides[kSideA].region, b = gateway.sides[kSideB].region;
-    if (gateway.door() || gateway.neutralised || a == 0 || b == 0 || a == region.id || b == region.id) continue;
+    if (gateway.door() || gateway.neutralised || a.isNone() || b.isNone() || a == region.id || b == region.id) continue;
     const std::vector<Eigen::Vector2d> corners = placeGateway(gateway, region.frame).gatewayPoints;
     for (std::size_t k = 0; k < corners.size(); ++k) out.push_back({corners[k], corners[(k + 1) % corners.size()]});
   }
@@ -149,7 +149,7 @@ RegionModels::RegionModels(const RegionModelConfig& config) : config_(config) {
 
 RegionModels::Model& RegionModels::upToDate(const RgMapState& state, RegionId id) {
   const auto region = state.regions.find(id);
-  if (region == state.regions.end()) throw NotAvailableError("no region " + std::to_string(id));
+  if (region == state.regions.end()) throw NotAvailableError("no region " + std::to_string(id.value()));
   const Region& r = region->second;
   const std::vector<GatewaySegment> gateways = regionGatewaySegments(state, r);
   std::vector<GatewaySegment> cutting = gateways;

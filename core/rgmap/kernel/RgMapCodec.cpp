@@ -60,7 +60,7 @@ Gateway gateway(const json& j) {
   g.aliases = integersFrom<std::vector<DetectorGatewayId>>(j.at("aliases"));
   g.odomToMap = poseFrom(j.at("odomToMap"));
   const json& sides = j.at("sides");
-  if (sides.size() != 2) damaged("gateway " + std::to_string(g.id) + ": want two sides");
+  if (sides.size() != 2) damaged("gateway " + std::to_string(g.id.value()) + ": want two sides");
   for (std::size_t i = 0; i < 2; ++i) {
     const json& s = sides.at(i);
     g.sides[i] = {static_cast<RegionId>(integerFrom(s.at("region"))),
@@ -180,7 +180,7 @@ void insertAll(const json& j, Map& into, Read&& read, Key&& key, const char* wha
   for (const json& item : j) {
     auto value = read(item);
     const auto k = key(value);
-    if (!into.emplace(k, std::move(value)).second) damaged(std::string("duplicate ") + what + " " + std::to_string(k));
+    if (!into.emplace(k, std::move(value)).second) damaged(std::string("duplicate ") + what + " " + json(k).dump());
   }
 }
 

@@ -94,14 +94,14 @@ class RgMapCodecTest : public CppUnit::TestFixture {
     const std::vector<KernelInput> inputs = rgnav::testing::ringTour().inputs();
     const RgMappingKernel straight = mapped(inputs, inputs.size());
     RgMappingKernel first = mapped(inputs, inputs.size() / 2);
-    first.nameRegion(2, "east corridor");
+    first.nameRegion(RegionId{2}, "east corridor");
     RgMappingKernel resumed({}, roundTrip(first.state()));
     CPPUNIT_ASSERT_EQUAL(std::string(), feedChecked(resumed, inputs, inputs.size() / 2, inputs.size()));
     CPPUNIT_ASSERT_EQUAL(RegionId(1), *resumed.regionByName("east corridor"));  // merged: the name stays
-    CPPUNIT_ASSERT(resumed.state().gateways.at(1).neutralised);
+    CPPUNIT_ASSERT(resumed.state().gateways.at(GatewayId{1}).neutralised);
     // The structure of a run without the stop.
     CPPUNIT_ASSERT(straight.state().gateways == resumed.state().gateways);
-    CPPUNIT_ASSERT(straight.state().regions.at(1).scans == resumed.state().regions.at(1).scans);
+    CPPUNIT_ASSERT(straight.state().regions.at(RegionId{1}).scans == resumed.state().regions.at(RegionId{1}).scans);
   }
 
   void rangesOfEveryKindSurvive() {
@@ -122,9 +122,9 @@ class RgMapCodecTest : public CppUnit::TestFixture {
                    std::numeric_limits<float>::denorm_min(),
                    0.0f};
     s.scans.emplace(1, StoredScan{scan, {1, 2, 3}});
-    s.regions.emplace(1, Region{1, {}, {1}, {}, {}, false, {}});
-    s.current = 1;
-    s.nextRegionId = 2;
+    s.regions.emplace(RegionId{1}, Region{RegionId{1}, {}, {1}, {}, {}, false, {}});
+    s.current = RegionId{1};
+    s.nextRegionId = RegionId{2};
     s.lastScanId = 1;
     const std::string text = serializeRgMap(s);
     const std::string line = scanJournalLines(s);
@@ -141,7 +141,7 @@ class RgMapCodecTest : public CppUnit::TestFixture {
   void doorAliasesSurvive() {
     const std::vector<KernelInput> inputs = rgnav::testing::twoRoomTour().inputs();
     RgMapState s = mapped(inputs, inputs.size()).state();
-    s.gateways.at(1).aliases = {111, 112};
+    s.gateways.at(GatewayId{1}).aliases = {DetectorGatewayId{111}, DetectorGatewayId{112}};
     const RgMapState back = roundTrip(s);
     CPPUNIT_ASSERT(back.gateways == s.gateways);
   }
@@ -199,46 +199,46 @@ class RgMapCodecTest : public CppUnit::TestFixture {
     const RgMapState good = k.state();
 
     RgMapState s = good;
-    s.regions.at(2).gateways.erase(1);  // room 1 forgets its door
+    s.regions.at(RegionId{2}).gateways.erase(GatewayId{1});  // room 1 forgets its door
     CPPUNIT_ASSERT(mentions(checkConsistency(s), "gateway 1 side B names region 2, which does not list it"));
 
     s = good;
-    s.regions.at(3).gateways.insert(1);  // room 2 claims room 1's door
+    s.regions.at(RegionId{3}).gateways.insert(GatewayId{1});  // room 2 claims room 1's door
     CPPUNIT_ASSERT(mentions(checkConsistency(s), "region 3 lists gateway 1, which does not name it"));
 
     s = good;
-    s.gateways.at(2).aliases = {s.gateways.at(1).record.id};  // door 2 also answers to door 1's detector ID
+    s.gateways.at(GatewayId{2}).aliases = {s.gateways.at(GatewayId{1}).record.id};  // door 2 also answers to door 1's detector ID
     CPPUNIT_ASSERT(mentions(checkConsistency(s), "gateway 2: detector gateway 11 is mapped twice"));
 
     s = good;
-    s.gateways.at(2).neutralised = true;
+    s.gateways.at(GatewayId{2}).neutralised = true;
     CPPUNIT_ASSERT(mentions(checkConsistency(s), "gateway 2: neutralised but joins two sides"));
 
     s = good;
-    s.gateways.at(2).sides[kSideB].region = 1;  // both sides the hallway, not flagged (and room 2 still lists it)
+    s.gateways.at(GatewayId{2}).sides[kSideB].region = RegionId{1};  // both sides the hallway, not flagged (and room 2 still lists it)
     const std::vector<std::string> violations = checkConsistency(s);
     CPPUNIT_ASSERT(mentions(violations, "gateway 2: the same region on both sides but not neutralised"));
     CPPUNIT_ASSERT(mentions(violations, "region 3 lists gateway 2, which does not name it"));
 
     s = good;
-    s.regions.at(2).scans.push_back(s.regions.at(1).scans.back() + 100000);                      // a scan never stored
-    s.regions.at(3).scans.insert(s.regions.at(3).scans.begin(), s.regions.at(1).scans.front());  // in two regions
+    s.regions.at(RegionId{2}).scans.push_back(s.regions.at(RegionId{1}).scans.back() + 100000);                      // a scan never stored
+    s.regions.at(RegionId{3}).scans.insert(s.regions.at(RegionId{3}).scans.begin(), s.regions.at(RegionId{1}).scans.front());  // in two regions
     const std::vector<std::string> scans = checkConsistency(s);
     CPPUNIT_ASSERT(mentions(scans, "is not stored"));
     CPPUNIT_ASSERT(mentions(scans, "lies in 2 regions"));
 
     s = good;
-    s.regions.at(3).scans.clear();  // an empty region the robot is not in
+    s.regions.at(RegionId{3}).scans.clear();  // an empty region the robot is not in
     s.scans.clear();
-    s.regions.at(1).scans.clear();
-    s.regions.at(2).scans.clear();
+    s.regions.at(RegionId{1}).scans.clear();
+    s.regions.at(RegionId{2}).scans.clear();
     const std::vector<std::string> empty = checkConsistency(s);
     CPPUNIT_ASSERT(mentions(empty, "region 3: empty"));
     CPPUNIT_ASSERT(!mentions(empty, "region 1: empty"));  // the current one may be
 
     s = good;
-    s.regions.at(3).name = s.regions.at(2).name = "office";
-    s.current = 42;
+    s.regions.at(RegionId{3}).name = s.regions.at(RegionId{2}).name = "office";
+    s.current = RegionId{42};
     s.events[3].id = 99;
     const std::vector<std::string> rest = checkConsistency(s);
     CPPUNIT_ASSERT(mentions(rest, "name \"office\" is taken by region 2"));

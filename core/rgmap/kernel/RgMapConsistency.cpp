@@ -7,8 +7,8 @@
 namespace rgnav {
 namespace {
 
-std::string regionName(RegionId id) { return "region " + std::to_string(id); }
-std::string gatewayName(GatewayId id) { return "gateway " + std::to_string(id); }
+std::string regionName(RegionId id) { return "region " + std::to_string(id.value()); }
+std::string gatewayName(GatewayId id) { return "gateway " + std::to_string(id.value()); }
 
 void checkGateway(const RgMapState& s, const Gateway& g, std::vector<std::string>& out) {
   const std::string name = gatewayName(g.id);
@@ -21,8 +21,8 @@ void checkGateway(const RgMapState& s, const Gateway& g, std::vector<std::string
     const std::string sideName = name + " side " + (side == kSideA ? "A" : "B");
     if (narrow && ref.crossing != side) out.push_back(sideName + ": a narrow passage's side is its crossing point");
     if (ref.crossing != kNoCrossing && ref.crossing >= crossings) out.push_back(sideName + ": no such crossing point");
-    if (ref.region != 0 && ref.crossing == kNoCrossing) out.push_back(sideName + ": a region without a crossing point");
-    if (ref.region == 0) continue;
+    if (!ref.region.isNone() && ref.crossing == kNoCrossing) out.push_back(sideName + ": a region without a crossing point");
+    if (ref.region.isNone()) continue;
     const auto r = s.regions.find(ref.region);
     if (r == s.regions.end())
       out.push_back(sideName + " names " + regionName(ref.region) + ", which does not exist");
@@ -31,7 +31,7 @@ void checkGateway(const RgMapState& s, const Gateway& g, std::vector<std::string
   }
   if (g.sides[kSideA].crossing != kNoCrossing && g.sides[kSideA].crossing == g.sides[kSideB].crossing)
     out.push_back(name + ": both sides on the same crossing point");
-  const bool same = g.sides[kSideA].region != 0 && g.sides[kSideA].region == g.sides[kSideB].region;
+  const bool same = !g.sides[kSideA].region.isNone() && g.sides[kSideA].region == g.sides[kSideB].region;
   if (same != g.neutralised)
     out.push_back(name +
                   (same ? ": the same region on both sides but not neutralised" : ": neutralised but joins two sides"));
@@ -59,12 +59,12 @@ std::vector<std::string> checkConsistency(const RgMapState& s) {
   std::vector<std::string> out;
   std::set<DetectorGatewayId> detectorIds;
   for (const auto& [id, g] : s.gateways) {
-    if (g.id != id || id == 0 || id >= s.nextGatewayId) out.push_back(gatewayName(id) + ": bad ID");
+    if (g.id != id || id.isNone() || id >= s.nextGatewayId) out.push_back(gatewayName(id) + ": bad ID");
     for (const DetectorGatewayId detectorId : g.aliases)
       if (detectorId == g.record.id || !detectorIds.insert(detectorId).second)
-        out.push_back(gatewayName(id) + ": detector gateway " + std::to_string(detectorId) + " is mapped twice");
+        out.push_back(gatewayName(id) + ": detector gateway " + std::to_string(detectorId.value()) + " is mapped twice");
     if (!detectorIds.insert(g.record.id).second)
-      out.push_back(gatewayName(id) + ": detector gateway " + std::to_string(g.record.id) + " is mapped twice");
+      out.push_back(gatewayName(id) + ": detector gateway " + std::to_string(g.record.id.value()) + " is mapped twice");
     if (!g.aliases.empty() && !g.door()) out.push_back(gatewayName(id) + ": a hallway area with further detector IDs");
     checkGateway(s, g, out);
   }
@@ -72,7 +72,7 @@ std::vector<std::string> checkConsistency(const RgMapState& s) {
   std::map<DataId, std::size_t> regionsOfScan;
   std::map<std::string, RegionId> names, objectNames;
   for (const auto& [id, r] : s.regions) {
-    if (r.id != id || id == 0 || id >= s.nextRegionId) out.push_back(regionName(id) + ": bad ID");
+    if (r.id != id || id.isNone() || id >= s.nextRegionId) out.push_back(regionName(id) + ": bad ID");
     checkRegion(s, r, out);
     for (DataId scan : r.scans) ++regionsOfScan[scan];
     if (!r.name.empty() && !names.emplace(r.name, id).second)
@@ -87,7 +87,7 @@ std::vector<std::string> checkConsistency(const RgMapState& s) {
     if (stored.scan.id != id || id > s.lastScanId) out.push_back("scan " + std::to_string(id) + ": bad ID");
   }
 
-  if (s.current != 0 ? !s.regions.contains(s.current) : !s.regions.empty())
+  if (!s.current.isNone() ? !s.regions.contains(s.current) : !s.regions.empty())
     out.push_back("the current " + regionName(s.current) + " does not exist");
   for (std::size_t i = 0; i < s.events.size(); ++i)
     if (s.events[i].id != i + 1) out.push_back("event " + std::to_string(s.events[i].id) + " out of sequence");

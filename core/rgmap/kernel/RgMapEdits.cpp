@@ -11,14 +11,14 @@ using K = RgMapEventKind;
 
 // Re-flags `g` after one of its sides changed; announces a gateway that became neutralised.
 void updateNeutralised(RgMapState& s, Gateway& g, DataId scan) {
-  const bool same = g.sides[kSideA].region != 0 && g.sides[kSideA].region == g.sides[kSideB].region;
-  if (same && !g.neutralised) emitEvent(s, K::GatewayNeutralised, g.sides[kSideA].region, 0, g.id, scan);
+  const bool same = !g.sides[kSideA].region.isNone() && g.sides[kSideA].region == g.sides[kSideB].region;
+  if (same && !g.neutralised) emitEvent(s, K::GatewayNeutralised, g.sides[kSideA].region, RegionId{}, g.id, scan);
   g.neutralised = same;
 }
 
 // Takes `g` off `region`'s list unless another of its sides still lies there.
 void unlist(RgMapState& s, const Gateway& g, RegionId region) {
-  if (region == 0 || g.sides[kSideA].region == region || g.sides[kSideB].region == region) return;
+  if (region.isNone() || g.sides[kSideA].region == region || g.sides[kSideB].region == region) return;
   s.regions.at(region).gateways.erase(g.id);
 }
 
@@ -31,7 +31,7 @@ void emitEvent(RgMapState& s, RgMapEventKind kind, RegionId region, RegionId oth
 RegionId createRegion(RgMapState& s, const Pose2D& frame, DataId scan) {
   const RegionId id = s.nextRegionId++;
   s.regions.emplace(id, Region{id, frame, {}, {}, {}, false, {}});
-  emitEvent(s, K::RegionCreated, id, 0, 0, scan);
+  emitEvent(s, K::RegionCreated, id, RegionId{}, GatewayId{}, scan);
   return id;
 }
 
@@ -43,7 +43,7 @@ GatewayId addGateway(RgMapState& s, const GatewayRecord& record, const Pose2D& o
     g.sides[kSideB].crossing = 1;
   }
   s.gateways.emplace(id, std::move(g));
-  emitEvent(s, K::GatewayAdded, 0, 0, id, scan);
+  emitEvent(s, K::GatewayAdded, RegionId{}, RegionId{}, id, scan);
   return id;
 }
 
@@ -78,7 +78,7 @@ RegionId mergeRegions(RgMapState& s, RegionId a, RegionId b, DataId scan) {
     keep.gateways.insert(id);
   }
   if (s.current == goneId) s.current = keepId;
-  emitEvent(s, K::RegionsMerged, keepId, goneId, 0, scan);
+  emitEvent(s, K::RegionsMerged, keepId, goneId, GatewayId{}, scan);
   for (GatewayId id : gone.gateways) updateNeutralised(s, s.gateways.at(id), scan);
   return keepId;
 }
@@ -98,19 +98,19 @@ void removeRegion(RgMapState& s, RegionId region, DataId scan) {
   for (GatewayId id : s.regions.at(region).gateways) {
     Gateway& g = s.gateways.at(id);
     for (GatewaySideRef& ref : g.sides)
-      if (ref.region == region) ref = {0, ref.crossing, 0};
+      if (ref.region == region) ref = {RegionId{}, ref.crossing, 0};
     updateNeutralised(s, g, scan);
   }
   s.regions.erase(region);
-  emitEvent(s, K::RegionRemoved, region, 0, 0, scan);
+  emitEvent(s, K::RegionRemoved, region, RegionId{}, GatewayId{}, scan);
 }
 
 void dropGateway(RgMapState& s, GatewayId id, DataId scan) {
   const Gateway& g = s.gateways.at(id);
   for (const GatewaySideRef& ref : g.sides)
-    if (ref.region != 0) s.regions.at(ref.region).gateways.erase(id);
+    if (!ref.region.isNone()) s.regions.at(ref.region).gateways.erase(id);
   s.gateways.erase(id);
-  emitEvent(s, K::GatewayDropped, 0, 0, id, scan);
+  emitEvent(s, K::GatewayDropped, RegionId{}, RegionId{}, id, scan);
 }
 
 }  // namespace rgnav

@@ -39,9 +39,9 @@ enum class RgMapEventKind : std::uint8_t {
 struct RgMapEvent {
   RgMapEventId id = 0;
   RgMapEventKind kind = RgMapEventKind::RegionCreated;
-  RegionId region = 0;
-  RegionId other = 0;
-  GatewayId gateway = 0;
+  RegionId region;
+  RegionId other;
+  GatewayId gateway;
   DataId scanId = 0;  // the scan the change refers to (the input's scan)
 
   friend bool operator==(const RgMapEvent&, const RgMapEvent&) = default;

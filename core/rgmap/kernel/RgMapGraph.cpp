@@ -11,7 +11,7 @@ RgGraphSpec graphSpec(const RgMapState& state) {
   for (const auto& [id, g] : state.gateways) {
     const GatewaySideRef& a = g.sides[kSideA];
     const GatewaySideRef& b = g.sides[kSideB];
-    if (a.region == 0 || b.region == 0) continue;
+    if (a.region.isNone() || b.region.isNone()) continue;
     const PlacedGateway placed = placeGateway(g);
     spec.gateways.push_back(
         {id, g.door(), {a.region, placed.crossingPoints[a.crossing]}, {b.region, placed.crossingPoints[b.crossing]}});

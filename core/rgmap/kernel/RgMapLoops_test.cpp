@@ -62,9 +62,9 @@ bool happened(const RgMappingKernel& k, RgMapEventKind kind) {
 SyntheticTour missedDoorTour(DoorReports whileInside,
                              rgnav::testing::TourWorld world = rgnav::testing::hallwayWithTwoRooms()) {
   SyntheticTour tour(std::move(world), rgnav::testing::kTourDrift);
-  tour.setReports(11, DoorReports::None);
+  tour.setReports(DetectorGatewayId{11}, DoorReports::None);
   tour.driveThrough({{1, 0.9}, {4, 0.9}, {4, 3.5}, {3, 4.5}, {5, 4.5}, {4, 3.5}});
-  tour.setReports(11, whileInside);
+  tour.setReports(DetectorGatewayId{11}, whileInside);
   tour.driveThrough({{4, 4}, {4, 3.5}, {4, 0.9}, {1, 0.9}});
   return tour;
 }
@@ -83,12 +83,12 @@ void checkRepairedRoom(const RgMappingKernel& k) {
   CPPUNIT_ASSERT_EQUAL(std::size_t(2), s.regions.size());
   CPPUNIT_ASSERT_EQUAL(std::size_t(1), s.gateways.size());
   const Gateway& door = s.gateways.begin()->second;
-  CPPUNIT_ASSERT_EQUAL(GatewayId(11), door.record.id);
+  CPPUNIT_ASSERT_EQUAL(DetectorGatewayId{11}, door.record.id);
   CPPUNIT_ASSERT(!door.neutralised);
   const RegionId room = door.sides[kSideA].region;  // the side it was first seen from: the room
   CPPUNIT_ASSERT_EQUAL(RegionId(2), room);
   CPPUNIT_ASSERT_EQUAL(RegionId(1), door.sides[kSideB].region);
-  checkScansSplitAtDoor11(s, room, 1);
+  checkScansSplitAtDoor11(s, room, RegionId{1});
   CPPUNIT_ASSERT(happened(k, RgMapEventKind::GatewayRepaired));
   CPPUNIT_ASSERT_EQUAL(RegionId(1), k.currentRegionId());
 }
@@ -98,10 +98,10 @@ void checkRepairedRoom(const RgMappingKernel& k) {
 void checkRoomRevisited(const RgMappingKernel& k) {
   const RgMapState& s = k.state();
   CPPUNIT_ASSERT_EQUAL(std::size_t(2), s.regions.size());
-  const Gateway& door = s.gateways.at(1);
+  const Gateway& door = s.gateways.at(GatewayId{1});
   CPPUNIT_ASSERT(!door.neutralised);
   const RegionId hallway = door.sides[kSideA].region, room = door.sides[kSideB].region;
-  CPPUNIT_ASSERT(hallway == 1 && room == 2);
+  CPPUNIT_ASSERT(hallway == RegionId{1} && room == RegionId{2});
   CPPUNIT_ASSERT_EQUAL(room, k.currentRegionId());
   checkScansSplitAtDoor11(s, room, hallway);
 }
@@ -135,34 +135,34 @@ class RgMapLoopsTest : public CppUnit::TestFixture {
     feedAll(k, inputs, 0, seenAgain);
     CPPUNIT_ASSERT_EQUAL(std::size_t(2), k.state().regions.size());
     CPPUNIT_ASSERT_EQUAL(RegionId(2), k.currentRegionId());
-    const Gateway& before = k.state().gateways.at(1);
-    CPPUNIT_ASSERT(before.sides[kSideA].region == 1 && before.sides[kSideB].region == 2 && !before.neutralised);
+    const Gateway& before = k.state().gateways.at(GatewayId{1});
+    CPPUNIT_ASSERT(before.sides[kSideA].region == RegionId{1} && before.sides[kSideB].region == RegionId{2} && !before.neutralised);
 
     // The door seen again from its west side, which lies in region 1: the robot is in region 1.
     feedAll(k, inputs, seenAgain, seenAgain + 1);
     const RgMapState& s = k.state();
     CPPUNIT_ASSERT_EQUAL(std::size_t(1), s.regions.size());
     CPPUNIT_ASSERT_EQUAL(RegionId(1), k.currentRegionId());
-    const Gateway& door = s.gateways.at(1);
+    const Gateway& door = s.gateways.at(GatewayId{1});
     CPPUNIT_ASSERT(door.neutralised);
-    CPPUNIT_ASSERT(door.sides[kSideA].region == 1 && door.sides[kSideB].region == 1);
+    CPPUNIT_ASSERT(door.sides[kSideA].region == RegionId{1} && door.sides[kSideB].region == RegionId{1});
     const auto merged = std::find_if(s.events.begin(), s.events.end(),
                                      [](const RgMapEvent& e) { return e.kind == RgMapEventKind::RegionsMerged; });
-    CPPUNIT_ASSERT(merged != s.events.end() && merged->region == 1 && merged->other == 2);
+    CPPUNIT_ASSERT(merged != s.events.end() && merged->region == RegionId{1} && merged->other == RegionId{2});
     CPPUNIT_ASSERT(std::next(merged) != s.events.end() &&
                    std::next(merged)->kind == RgMapEventKind::GatewayNeutralised);
-    CPPUNIT_ASSERT_EQUAL(s.scans.size(), s.regions.at(1).scans.size());
+    CPPUNIT_ASSERT_EQUAL(s.scans.size(), s.regions.at(RegionId{1}).scans.size());
 
     // Through the door again: nothing changes but the traversal count.
     feedAll(k, inputs, seenAgain + 1, inputs.size());
     CPPUNIT_ASSERT_EQUAL(std::size_t(1), k.state().regions.size());
-    CPPUNIT_ASSERT_EQUAL(std::size_t(2), k.state().gateways.at(1).traversalsFrom[kSideA]);
+    CPPUNIT_ASSERT_EQUAL(std::size_t(2), k.state().gateways.at(GatewayId{1}).traversalsFrom[kSideA]);
     CPPUNIT_ASSERT_EQUAL(RgMapEventKind::GatewayTraversed, k.state().events.back().kind);
     CPPUNIT_ASSERT_EQUAL(k.state().events.back().region, k.state().events.back().other);
     // The neutralised door stays in the RG Graph, inside the one region.
     const RgGraph graph = k.graph();
     CPPUNIT_ASSERT_EQUAL(std::size_t(2), graph.nodes().size());
-    CPPUNIT_ASSERT(graph.nodes()[0].region == 1 && graph.nodes()[1].region == 1);
+    CPPUNIT_ASSERT(graph.nodes()[0].region == RegionId{1} && graph.nodes()[1].region == RegionId{1});
   }
 
   void doorMissedOnEntryIsRepairedWhenSeenFromInside() {
@@ -197,15 +197,15 @@ class RgMapLoopsTest : public CppUnit::TestFixture {
     const std::size_t detected = nextEvent(inputs, 0, GatewayEventKind::Detected);
     feedAll(k, inputs, 0, detected);
     const Eigen::Vector2d truth = rgnav::testing::cabinetCentre();
-    const Pose2D cabinet = between(k.state().regions.at(1).frame, {truth.x(), truth.y(), 0.0});
-    k.nameObject(1, {cabinet.x, cabinet.y}, "cabinet");
+    const Pose2D cabinet = between(k.state().regions.at(RegionId{1}).frame, {truth.x(), truth.y(), 0.0});
+    k.nameObject(RegionId{1}, {cabinet.x, cabinet.y}, "cabinet");
     CPPUNIT_ASSERT_EQUAL(RegionId(1), k.objectByName("cabinet")->region);
 
     feedAll(k, inputs, detected, inputs.size());
     checkRepairedRoom(k);
     const auto named = k.objectByName("cabinet");
-    CPPUNIT_ASSERT(named && named->region == 2);
-    const std::vector<std::string> names = objectNamesOf(k.state().regions.at(2), k.description(2).objects);
+    CPPUNIT_ASSERT(named && named->region == RegionId{2});
+    const std::vector<std::string> names = objectNamesOf(k.state().regions.at(RegionId{2}), k.description(RegionId{2}).objects);
     CPPUNIT_ASSERT(std::find(names.begin(), names.end(), "cabinet") != names.end());
     CPPUNIT_ASSERT(k.checkConsistency().empty());
   }
@@ -213,7 +213,7 @@ class RgMapLoopsTest : public CppUnit::TestFixture {
   void knownDoorPassedWithoutReportIsTraversed() {
     SyntheticTour tour(rgnav::testing::hallwayWithTwoRooms(), rgnav::testing::kTourDrift);
     tour.driveThrough({{1, 0.9}, {4, 0.9}, {4, 4.5}, {4, 0.9}, {1, 0.9}});  // into room 1 and out again
-    tour.setReports(11, DoorReports::None);
+    tour.setReports(DetectorGatewayId{11}, DoorReports::None);
     tour.driveThrough({{4, 0.9}, {4, 4.5}});  // in once more, unreported
     RgMappingKernel k;
     feedAll(k, tour.inputs(), 0, tour.inputs().size());
@@ -239,7 +239,7 @@ class RgMapLoopsTest : public CppUnit::TestFixture {
   void doorDetectedAnewIsTheKnownDoor() {
     SyntheticTour tour(rgnav::testing::hallwayWithTwoRooms(), rgnav::testing::kTourDrift);
     tour.driveThrough({{1, 0.9}, {4, 0.9}, {4, 4.5}, {3, 5}});  // in through door 11, out of its range
-    tour.redetect(11, 111);
+    tour.redetect(DetectorGatewayId{11}, DetectorGatewayId{111});
     tour.driveThrough({{4, 4.5}, {4, 0.9}, {1, 0.9}});  // out again: door 111, first seen from the room
     RgMappingKernel k;
     feedAll(k, tour.inputs(), 0, tour.inputs().size());
@@ -247,8 +247,8 @@ class RgMapLoopsTest : public CppUnit::TestFixture {
     CPPUNIT_ASSERT_EQUAL(std::size_t(2), s.regions.size());
     CPPUNIT_ASSERT_EQUAL(std::size_t(1), s.gateways.size());
     const Gateway& door = s.gateways.begin()->second;
-    CPPUNIT_ASSERT_EQUAL(GatewayId(11), door.record.id);
-    CPPUNIT_ASSERT(door.aliases == std::vector<DetectorGatewayId>{111});
+    CPPUNIT_ASSERT_EQUAL(DetectorGatewayId{11}, door.record.id);
+    CPPUNIT_ASSERT(door.aliases == std::vector<DetectorGatewayId>{DetectorGatewayId{111}});
     CPPUNIT_ASSERT(!door.neutralised);
     CPPUNIT_ASSERT(door.traversalsFrom[kSideA] == 1 && door.traversalsFrom[kSideB] == 1);
     CPPUNIT_ASSERT_EQUAL(door.sides[kSideA].region, k.currentRegionId());  // back in the hallway
@@ -257,14 +257,14 @@ class RgMapLoopsTest : public CppUnit::TestFixture {
   void doorDetectedAnewClosesTheRing() {
     SyntheticTour tour(rgnav::testing::ringCorridor(), rgnav::testing::kTourDrift);
     tour.driveThrough({{1.1, 1}, {9, 1}, {9, 9}, {1, 9}});
-    tour.redetect(21, 121);
+    tour.redetect(DetectorGatewayId{21}, DetectorGatewayId{121});
     tour.driveThrough({{1, 1}, {4.2, 1}});  // the door seen from its west side, not traversed
     RgMappingKernel k;
     feedAll(k, tour.inputs(), 0, tour.inputs().size());
     const RgMapState& s = k.state();
     CPPUNIT_ASSERT_EQUAL(std::size_t(1), s.regions.size());
     const Gateway& door = s.gateways.begin()->second;
-    CPPUNIT_ASSERT(door.aliases == std::vector<DetectorGatewayId>{121});
+    CPPUNIT_ASSERT(door.aliases == std::vector<DetectorGatewayId>{DetectorGatewayId{121}});
     CPPUNIT_ASSERT(door.neutralised);
     CPPUNIT_ASSERT(happened(k, RgMapEventKind::RegionsMerged));
   }
@@ -274,17 +274,17 @@ class RgMapLoopsTest : public CppUnit::TestFixture {
     rgnav::testing::TourWorld world = rgnav::testing::hallwayWithTwoRooms();
     world.walls.push_back({{2, 2.9}, {3.55, 2.9}});
     world.walls.push_back({{4.45, 2.9}, {6, 2.9}});
-    world.doors.push_back({13, {3.55, 2.9}, {4.45, 2.9}, DoorReports::All});
+    world.doors.push_back({DetectorGatewayId{13}, {3.55, 2.9}, {4.45, 2.9}, DoorReports::All});
     SyntheticTour tour(world, rgnav::testing::kTourDrift, 0.25, 1.2);
     tour.driveThrough({{1, 0.9}, {4, 0.9}, {4, 4.6}});  // through doors 11 and 13
-    tour.redetect(11, 111);
+    tour.redetect(DetectorGatewayId{11}, DetectorGatewayId{111});
     // Door 11 seen again from (4, 3.1), 0.6 m from its room-side crossing point, through door 13.
     tour.driveThrough({{4, 3.1}});
     RgMappingKernel k;
     feedAll(k, tour.inputs(), 0, tour.inputs().size());
     CPPUNIT_ASSERT_EQUAL(std::size_t(3), k.state().regions.size());
     CPPUNIT_ASSERT(!happened(k, RgMapEventKind::RegionsMerged));
-    CPPUNIT_ASSERT(k.state().gateways.at(1).aliases == std::vector<DetectorGatewayId>{111});
+    CPPUNIT_ASSERT(k.state().gateways.at(GatewayId{1}).aliases == std::vector<DetectorGatewayId>{DetectorGatewayId{111}});
   }
 
   void noTransitionAfterAllIsDropped() {
@@ -296,7 +296,7 @@ class RgMapLoopsTest : public CppUnit::TestFixture {
     // The detector changes its mind before the robot gets there: a dead end, not a gateway.
     relabel(k, inputs[detected], {{"Deadend", 0.9}, {kNarrowPassageClass, 0.1}});
     CPPUNIT_ASSERT(k.state().gateways.empty());
-    CPPUNIT_ASSERT(k.state().regions.at(1).gateways.empty());
+    CPPUNIT_ASSERT(k.state().regions.at(RegionId{1}).gateways.empty());
     CPPUNIT_ASSERT_EQUAL(RgMapEventKind::GatewayDropped, k.state().events.back().kind);
     CPPUNIT_ASSERT(k.checkConsistency().empty());
   }
@@ -330,13 +330,13 @@ class RgMapLoopsTest : public CppUnit::TestFixture {
   void widerTwinLabelOnAnAliasTakesOnlyTheAlias() {
     SyntheticTour tour(rgnav::testing::hallwayWithTwoRooms(), rgnav::testing::kTourDrift);
     tour.driveThrough({{1, 0.9}, {4, 0.9}, {4, 4.5}, {3, 5}});
-    tour.redetect(11, 111);
+    tour.redetect(DetectorGatewayId{11}, DetectorGatewayId{111});
     tour.driveThrough({{4, 4.5}, {4, 0.9}, {1, 0.9}});
     const std::vector<KernelInput>& inputs = tour.inputs();
     RgMappingKernel k;
     feedAll(k, inputs, 0, inputs.size());
     const auto last111 = std::find_if(inputs.rbegin(), inputs.rend(),
-                                      [](const KernelInput& in) { return in.event && in.event->gateway.id == 111; });
+                                      [](const KernelInput& in) { return in.event && in.event->gateway.id == DetectorGatewayId{111}; });
     CPPUNIT_ASSERT(last111 != inputs.rend());
     relabel(k, *last111, {{kWiderTwinClass, 0.9}});
     const RgMapState& s = k.state();

@@ -35,13 +35,12 @@ namespace rgnav {
 
 // IDs of the kernel's regions and gateways start at 1; 0 means "none". A gateway's kernel ID is
 // not the detector's ID (GatewayRecord::id): the kernel numbers gateways as it takes them in.
-using DetectorGatewayId = std::uint64_t;
 
 inline constexpr std::size_t kNoCrossing = std::numeric_limits<std::size_t>::max();
 
 // One side of a gateway (thesis 2.1.3: each side has one crossing point and lies in one region).
 struct GatewaySideRef {
-  RegionId region = 0;                 // 0: no region known on this side yet
+  RegionId region;                 // 0: no region known on this side yet
   std::size_t crossing = kNoCrossing;  // index into record.crossingPoints; kNoCrossing: not known yet
   DataId attachedAt = 0;               // the scan at which `region` was attached
 
@@ -51,7 +50,7 @@ struct GatewaySideRef {
 inline constexpr std::size_t kSideA = 0, kSideB = 1;
 
 struct Gateway {
-  GatewayId id = 0;
+  GatewayId id;
   // The detector's hypothesis as last reported (detector ID, class label and probabilities, gateway
   // and crossing points, width), in the detector's odometry frame ...
   GatewayRecord record;
@@ -74,7 +73,7 @@ struct Gateway {
 };
 
 struct Region {
-  RegionId id = 0;
+  RegionId id;
   Pose2D frame;                  // the region's own frame, in the map frame
   std::vector<DataId> scans;     // the scans taken in it, ascending
   std::set<GatewayId> gateways;  // G_ref: every gateway with this region on a side
@@ -99,10 +98,10 @@ struct RgMapState {
   std::map<GatewayId, Gateway> gateways;
   std::map<DataId, StoredScan> scans;
   std::vector<RgMapEvent> events;  // consecutive IDs from 1
-  RegionId current = 0;            // the region the robot is in; 0 before the first input
+  RegionId current;            // the region the robot is in; 0 before the first input
   DataId visitStart = 0;           // the first scan of the robot's current visit of `current`
-  RegionId nextRegionId = 1;
-  GatewayId nextGatewayId = 1;
+  RegionId nextRegionId{1};
+  GatewayId nextGatewayId{1};
   DataId lastScanId = 0;                  // the last scan taken in (inputs resume after it)
   GatewayEventId lastGatewayEventId = 0;  // the last gateway event taken in
   std::uint64_t lastPoseRevision = 0;     // the last SLAM pose revision applied (revisePoses)

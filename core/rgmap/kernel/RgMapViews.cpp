@@ -12,7 +12,7 @@ RegionSummaryView summaryOf(const Region& r) {
 
 RegionView regionView(const RgMappingKernel& kernel, RegionId id) {
   const auto found = kernel.state().regions.find(id);
-  if (found == kernel.state().regions.end()) throw NotAvailableError("no region " + std::to_string(id));
+  if (found == kernel.state().regions.end()) throw NotAvailableError("no region " + std::to_string(id.value()));
   RegionView v;
   v.summary = summaryOf(found->second);
   for (const LineSegment& l : kernel.lineMap(id).lines()) v.lines.push_back({l.start, l.end});
@@ -58,7 +58,7 @@ GraphView graphView(const RgGraph& graph) {
   GraphView v;
   for (const RgNode& n : graph.nodes()) v.nodes.push_back(nodeView(n));
   for (const RgEdge& e : graph.edges())
-    v.edges.push_back({e.from, e.to, e.kind() == EdgeKind::Gateway, e.through, e.lengthM, e.costM});
+    v.edges.push_back({e.from, e.to, e.gateway, e.region, e.lengthM, e.costM});
   return v;
 }
 

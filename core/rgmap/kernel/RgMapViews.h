@@ -16,7 +16,7 @@
 namespace rgnav {
 
 struct RegionSummaryView {
-  RegionId id = 0;
+  RegionId id;
   std::string name;
   Pose2D frame;
   std::size_t scans = 0;
@@ -58,22 +58,22 @@ struct RegionView {
 
 // In the map frame.
 struct GatewayView {
-  GatewayId id = 0;
-  DetectorGatewayId detectorId = 0;
+  GatewayId id;
+  DetectorGatewayId detectorId;
   std::vector<ClassProbability> classes;
   bool door = false;
   bool neutralised = false;
   std::vector<Eigen::Vector2d> gatewayPoints, crossingPoints;
-  RegionId sideA = 0, sideB = 0;
+  RegionId sideA, sideB;
   std::size_t traversals = 0;
 
   friend bool operator==(const GatewayView&, const GatewayView&) = default;
 };
 
 struct GraphNodeView {
-  GatewayId gateway = 0;
+  GatewayId gateway;
   std::size_t side = 0;  // 0 = A, 1 = B
-  RegionId region = 0;
+  RegionId region;
   Eigen::Vector2d position = Eigen::Vector2d::Zero();
 
   friend bool operator==(const GraphNodeView&, const GraphNodeView&) = default;
@@ -81,9 +81,11 @@ struct GraphNodeView {
 
 struct GraphEdgeView {
   std::size_t from = 0, to = 0;
-  bool throughGateway = false;
-  std::uint64_t through = 0;
+  GatewayId gateway;  // a gateway edge's gateway; none for a region edge
+  RegionId region;    // a region edge's region; none for a gateway edge
   double lengthM = 0.0, costM = 0.0;
+
+  bool throughGateway() const { return !gateway.isNone(); }
 
   friend bool operator==(const GraphEdgeView&, const GraphEdgeView&) = default;
 };
@@ -102,7 +104,7 @@ struct MapSummaryView {
   std::size_t regions = 0, gateways = 0, neutralised = 0;
   DataId lastScan = 0;
   RgMapEventId lastEvent = 0;
-  RegionId current = 0;
+  RegionId current;
   bool endOfData = false;
 
   friend bool operator==(const MapSummaryView&, const MapSummaryView&) = default;

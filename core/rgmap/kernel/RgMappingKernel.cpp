@@ -71,7 +71,7 @@ RgMappingKernel::RgMappingKernel(const RgMappingKernelConfig& config, RgMapState
 }
 
 void RgMappingKernel::ensureCurrentRegion(const Pose2D& frame, DataId scan) {
-  if (state_.current != 0) return;
+  if (!state_.current.isNone()) return;
   state_.current = createRegion(state_, frame, scan);
   state_.visitStart = 0;
 }
@@ -96,7 +96,7 @@ void RgMappingKernel::repairPassedDoor(const Pose2D& robot, DataId scan) {
     if (!crossing || seenThroughAnotherDoor(state_, id, at, *crossing)) continue;
     for (std::size_t side : {kSideA, kSideB}) {
       const GatewaySideRef& ref = g.sides[side];
-      if (ref.crossing != *crossing || ref.region == 0 || ref.region == state_.current) continue;
+      if (ref.crossing != *crossing || ref.region.isNone() || ref.region == state_.current) continue;
       if (repairMissedCrossing(id, side, scan + 1)) return;  // the gateways changed: no further look
     }
   }
@@ -171,7 +171,7 @@ GatewayId RgMappingKernel::takeIn(const GatewayRecord& record, const Pose2D& odo
     g.record = record;
     g.odomToMap = odomToMap;
   }
-  if (announceUpdate) emitEvent(state_, K::GatewayUpdated, 0, 0, *known, scan);
+  if (announceUpdate) emitEvent(state_, K::GatewayUpdated, RegionId{}, RegionId{}, *known, scan);
   return *known;
 }
 
@@ -190,7 +190,7 @@ std::optional<std::size_t> RgMappingKernel::sideOf(GatewayId id, std::size_t cro
 RegionId RgMappingKernel::joinSide(GatewayId id, std::size_t side, RegionId region, DataId scan) {
   const RegionId there = state_.gateways.at(id).sides[side].region;
   if (there == region) return region;
-  if (there == 0) {
+  if (there.isNone()) {
     attachSide(state_, id, side, region, scan);
     return region;
   }
@@ -214,7 +214,7 @@ void RgMappingKernel::observe(const GatewayEvent& event, const Pose2D& odomToMap
     }
     takeIn(record, odomToMap, true, scan);
     const RegionId a = g.sides[kSideA].region, b = g.sides[kSideB].region;
-    if (a != 0 && b != 0 && a != b) rgnav::mergeRegions(state_, a, b, scan);
+    if (!a.isNone() && !b.isNone() && a != b) rgnav::mergeRegions(state_, a, b, scan);
     return;
   }
   const GatewayId id = takeIn(record, odomToMap, event.kind == GatewayEventKind::Updated, scan);
@@ -257,11 +257,11 @@ void RgMappingKernel::traverse(const GatewayEvent& event, const Pose2D& odomToMa
     emitEvent(state_, K::GatewayTraversed, left, left, id, t.scanId);
     return;
   }
-  if (entered == 0) {
+  if (entered.isNone()) {
     entered = createRegion(state_, crossingPose(t, odomToMap), t.scanId);
     attachSide(state_, id, *to, entered, t.scanId);
   } else {
-    emitEvent(state_, K::RegionEntered, entered, 0, 0, t.scanId);
+    emitEvent(state_, K::RegionEntered, entered, RegionId{}, GatewayId{}, t.scanId);
   }
   moveScans(state_, left, entered, t.scanId, kNoScanLimit);
   state_.current = entered;
@@ -316,7 +316,7 @@ void RgMappingKernel::leave(RegionId region, DataId scan) {
     removeRegion(state_, region, scan);
     return;
   }
-  emitEvent(state_, r.finalised ? K::RegionUpdated : K::RegionFinalised, region, 0, 0, scan);
+  emitEvent(state_, r.finalised ? K::RegionUpdated : K::RegionFinalised, region, RegionId{}, GatewayId{}, scan);
   r.finalised = true;
 }
 
@@ -341,12 +341,12 @@ void RgMappingKernel::revisePoses(std::span<const CorrectedPose> poses, std::uin
     g.odomToMap = placed;
   }
   state_.lastPoseRevision = revision;
-  if (changed) emitEvent(state_, K::PosesRevised, 0, 0, 0, state_.lastScanId);
+  if (changed) emitEvent(state_, K::PosesRevised, RegionId{}, RegionId{}, GatewayId{}, state_.lastScanId);
 }
 
 RegionId RgMappingKernel::mergeRegions(RegionId a, RegionId b) {
   if (!state_.regions.contains(a) || !state_.regions.contains(b) || a == b)
-    throw InvalidArgumentError("cannot merge region " + std::to_string(a) + " and region " + std::to_string(b));
+    throw InvalidArgumentError("cannot merge region " + std::to_string(a.value()) + " and region " + std::to_string(b.value()));
   const RegionId merged = rgnav::mergeRegions(state_, a, b, state_.lastScanId);
   models_.prune(state_);
   return merged;
@@ -354,12 +354,12 @@ RegionId RgMappingKernel::mergeRegions(RegionId a, RegionId b) {
 
 void RgMappingKernel::nameRegion(RegionId region, const std::string& name) {
   const auto r = state_.regions.find(region);
-  if (r == state_.regions.end()) throw InvalidArgumentError("no region " + std::to_string(region));
+  if (r == state_.regions.end()) throw InvalidArgumentError("no region " + std::to_string(region.value()));
   const std::optional<RegionId> holder = regionByName(name);
   if (!name.empty() && holder && *holder != region)
-    throw InvalidArgumentError("region " + std::to_string(*holder) + " is already named \"" + name + "\"");
+    throw InvalidArgumentError("region " + std::to_string(holder->value()) + " is already named \"" + name + "\"");
   r->second.name = name;
-  emitEvent(state_, K::RegionNamed, region, 0, 0, state_.lastScanId);
+  emitEvent(state_, K::RegionNamed, region, RegionId{}, GatewayId{}, state_.lastScanId);
 }
 
 std::optional<RegionId> RgMappingKernel::regionByName(const std::string& name) const {
@@ -370,11 +370,11 @@ std::optional<RegionId> RgMappingKernel::regionByName(const std::string& name) c
 
 void RgMappingKernel::nameObject(RegionId region, const Eigen::Vector2d& atInRegion, const std::string& name) {
   const auto r = state_.regions.find(region);
-  if (r == state_.regions.end()) throw InvalidArgumentError("no region " + std::to_string(region));
+  if (r == state_.regions.end()) throw InvalidArgumentError("no region " + std::to_string(region.value()));
   const std::vector<Rectangle2D>& objects = description(region).objects;
   const std::optional<std::size_t> index = objectAt(objects, atInRegion);
   if (!index)
-    throw InvalidArgumentError("region " + std::to_string(region) + " has no object at (" +
+    throw InvalidArgumentError("region " + std::to_string(region.value()) + " has no object at (" +
                                std::to_string(atInRegion.x()) + ", " + std::to_string(atInRegion.y()) + ")");
   const auto isThisObject = [&](const Eigen::Vector2d& namedAt) {
     return objectNamedAt(r->second, objects, namedAt) == index;
@@ -387,7 +387,7 @@ void RgMappingKernel::nameObject(RegionId region, const Eigen::Vector2d& atInReg
     const Pose2D centre = compose(r->second.frame, {objects[*index].pose.x, objects[*index].pose.y, 0.0});
     r->second.objectNames[name] = {centre.x, centre.y};
   }
-  emitEvent(state_, K::ObjectNamed, region, 0, 0, state_.lastScanId);
+  emitEvent(state_, K::ObjectNamed, region, RegionId{}, GatewayId{}, state_.lastScanId);
 }
 
 std::optional<RgMappingKernel::NamedObject> RgMappingKernel::objectByName(const std::string& name) const {
@@ -402,18 +402,18 @@ void RgMappingKernel::recordEdgeTraversal(const EdgeKey& edge, double lengthM, d
   RgGraph g = graph();
   g.recordTraversal(edge, lengthM, timeS);
   storeCosts(state_, g.costs());
-  emitEvent(state_, K::CostsLearned, 0, 0, edge.a.gateway, state_.lastScanId);
+  emitEvent(state_, K::CostsLearned, RegionId{}, RegionId{}, edge.a.gateway, state_.lastScanId);
 }
 
 void RgMappingKernel::recordDoorState(GatewayId gateway, bool traversable) {
   RgGraph g = graph();
   g.recordDoorState(gateway, traversable);
   storeCosts(state_, g.costs());
-  emitEvent(state_, K::CostsLearned, 0, 0, gateway, state_.lastScanId);
+  emitEvent(state_, K::CostsLearned, RegionId{}, RegionId{}, gateway, state_.lastScanId);
 }
 
 CurrentRegion RgMappingKernel::currentRegion() const {
-  if (state_.current == 0) throw NotAvailableError("no region yet");
+  if (state_.current.isNone()) throw NotAvailableError("no region yet");
   const RegionLineMap& lines = models_.lineMap(state_, state_.current);
   return {state_.regions.at(state_.current), lines, models_.description(state_, state_.current)};
 }
@@ -428,7 +428,7 @@ PlacedGateway RgMappingKernel::gatewayInRegion(GatewayId gateway, RegionId regio
   const auto g = state_.gateways.find(gateway);
   const auto r = state_.regions.find(region);
   if (g == state_.gateways.end() || r == state_.regions.end())
-    throw NotAvailableError("no gateway " + std::to_string(gateway) + " or region " + std::to_string(region));
+    throw NotAvailableError("no gateway " + std::to_string(gateway.value()) + " or region " + std::to_string(region.value()));
   return placeGateway(g->second, r->second.frame);
 }
 

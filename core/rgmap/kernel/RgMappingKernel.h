@@ -157,7 +157,7 @@ class RgMappingKernel {
   // The region holding the object named `name` and the object's centre in the map frame when it
   // was named.
   struct NamedObject {
-    RegionId region = 0;
+    RegionId region;
     Eigen::Vector2d namedAt = Eigen::Vector2d::Zero();
   };
   std::optional<NamedObject> objectByName(const std::string& name) const;

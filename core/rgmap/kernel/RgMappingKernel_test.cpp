@@ -30,8 +30,8 @@ using rgnav::testing::twoRoomTour;
 
 namespace {
 
-constexpr RegionId kHallway = 1, kRoom1 = 2, kRoom2 = 3;
-constexpr GatewayId kDoor1 = 1, kDoor2 = 2;
+constexpr RegionId kHallway{1}, kRoom1{2}, kRoom2{3};
+constexpr GatewayId kDoor1{1}, kDoor2{2};
 
 RgMappingKernel mappedFloor() {
   const std::vector<rgnav::testing::KernelInput> inputs = twoRoomTour().inputs();
@@ -44,10 +44,10 @@ std::string joinedViolations(const RgMappingKernel& k) {
   return out;
 }
 
-std::size_t countEvents(const RgMappingKernel& k, RgMapEventKind kind, RegionId region = 0) {
+std::size_t countEvents(const RgMappingKernel& k, RgMapEventKind kind, RegionId region = RegionId{}) {
   return static_cast<std::size_t>(
       std::count_if(k.state().events.begin(), k.state().events.end(),
-                    [&](const RgMapEvent& e) { return e.kind == kind && (region == 0 || e.region == region); }));
+                    [&](const RgMapEvent& e) { return e.kind == kind && (region.isNone() || e.region == region); }));
 }
 
 // A hallway-area gateway at the south-east corner of ringCorridor() (the square x in [8, 10],
@@ -65,7 +65,7 @@ GatewayEvent cornerEvent(GatewayEventId id, GatewayEventKind kind, const StoredS
   e.id = id;
   e.kind = kind;
   GatewayRecord& r = e.gateway;
-  r.id = 7;
+  r.id = DetectorGatewayId{7};
   r.kind = GatewayKind::HallwayArea;
   r.classes = {{"L-Turn", 0.8}, {"T-Junction", 0.2}};
   r.gatewayPoints = {odom(8, 2), odom(10, 2), odom(10, 0), odom(8, 0)};
@@ -147,7 +147,7 @@ class RgMappingKernelTest : public CppUnit::TestFixture {
     CPPUNIT_ASSERT_EQUAL(kRoom1, d1.sides[kSideB].region);
     CPPUNIT_ASSERT_EQUAL(kHallway, d2.sides[kSideA].region);
     CPPUNIT_ASSERT_EQUAL(kRoom2, d2.sides[kSideB].region);
-    CPPUNIT_ASSERT_EQUAL(GatewayId(11), d1.record.id);
+    CPPUNIT_ASSERT_EQUAL(DetectorGatewayId{11}, d1.record.id);
     CPPUNIT_ASSERT(d1.door() && !d1.neutralised && !d2.neutralised);
     CPPUNIT_ASSERT_EQUAL(std::size_t(2), d1.traversalsFrom[kSideA]);
     CPPUNIT_ASSERT_EQUAL(std::size_t(2), d1.traversalsFrom[kSideB]);
@@ -212,7 +212,7 @@ class RgMappingKernelTest : public CppUnit::TestFixture {
       for (auto corner : {Eigen::AlignedBox2d::BottomLeft, Eigen::AlignedBox2d::BottomRight,
                           Eigen::AlignedBox2d::TopLeft, Eigen::AlignedBox2d::TopRight}) {
         const Eigen::Vector2d p = transformPoint(frame, d.boundingBox.corner(corner));
-        CPPUNIT_ASSERT_MESSAGE("region " + std::to_string(c.region), room.contains(p));
+        CPPUNIT_ASSERT_MESSAGE("region " + std::to_string(c.region.value()), room.contains(p));
       }
     }
   }
@@ -232,7 +232,7 @@ class RgMappingKernelTest : public CppUnit::TestFixture {
 
   void hallwayTurnJoinsTwoRegions() {
     rgnav::testing::SyntheticTour tour(rgnav::testing::ringCorridor(), rgnav::testing::kTourDrift);
-    tour.setReports(21, rgnav::testing::DoorReports::None);
+    tour.setReports(DetectorGatewayId{21}, rgnav::testing::DoorReports::None);
     tour.driveThrough({{6.1, 1}, {9, 1}, {9, 5}});
     RgMappingKernel k;
     feedWithArea(
@@ -248,16 +248,16 @@ class RgMappingKernelTest : public CppUnit::TestFixture {
         [&] { CPPUNIT_ASSERT_EQUAL(std::string(), joinedViolations(k)); });
     const RgMapState& s = k.state();
     CPPUNIT_ASSERT_EQUAL(std::size_t(2), s.regions.size());
-    const Gateway& corner = s.gateways.at(1);
+    const Gateway& corner = s.gateways.at(GatewayId{1});
     CPPUNIT_ASSERT(!corner.door());
-    CPPUNIT_ASSERT(corner.sides[kSideA].region == 1 && corner.sides[kSideA].crossing == 0);
-    CPPUNIT_ASSERT(corner.sides[kSideB].region == 2 && corner.sides[kSideB].crossing == 1);
+    CPPUNIT_ASSERT(corner.sides[kSideA].region == RegionId{1} && corner.sides[kSideA].crossing == 0);
+    CPPUNIT_ASSERT(corner.sides[kSideB].region == RegionId{2} && corner.sides[kSideB].crossing == 1);
     // Each region is bounded by the side of the square it lies beyond.
-    const std::vector<GatewaySegment> west = regionGatewaySegments(s, s.regions.at(1));
-    const std::vector<GatewaySegment> north = regionGatewaySegments(s, s.regions.at(2));
+    const std::vector<GatewaySegment> west = regionGatewaySegments(s, s.regions.at(RegionId{1}));
+    const std::vector<GatewaySegment> north = regionGatewaySegments(s, s.regions.at(RegionId{2}));
     CPPUNIT_ASSERT(west.size() == 1 && north.size() == 1);
-    const Pose2D& frame2 = s.regions.at(2).frame;
-    CPPUNIT_ASSERT((transformPoint(s.regions.at(1).frame, west[0].a) - Eigen::Vector2d(8, 0)).norm() < 1e-9);
+    const Pose2D& frame2 = s.regions.at(RegionId{2}).frame;
+    CPPUNIT_ASSERT((transformPoint(s.regions.at(RegionId{1}).frame, west[0].a) - Eigen::Vector2d(8, 0)).norm() < 1e-9);
     CPPUNIT_ASSERT((transformPoint(frame2, north[0].a) - Eigen::Vector2d(8, 2)).norm() < 1e-9);
     CPPUNIT_ASSERT((transformPoint(frame2, north[0].b) - Eigen::Vector2d(10, 2)).norm() < 1e-9);
     const RgGraph graph = k.graph();
@@ -275,7 +275,7 @@ class RgMappingKernelTest : public CppUnit::TestFixture {
     k.addGatewayEvent(hallway, last.corrected);
     CPPUNIT_ASSERT_EQUAL(std::size_t(1), k.state().regions.size());
     CPPUNIT_ASSERT_EQUAL(RegionId(1), k.currentRegionId());
-    CPPUNIT_ASSERT(k.state().gateways.at(1).neutralised);
+    CPPUNIT_ASSERT(k.state().gateways.at(GatewayId{1}).neutralised);
     CPPUNIT_ASSERT_EQUAL(std::string(), joinedViolations(k));
   }
 
@@ -283,17 +283,17 @@ class RgMappingKernelTest : public CppUnit::TestFixture {
   // its traversal attaches regions to a hallway area.
   void hallwayAreaSidesComeFromTraversalsOnly() {
     rgnav::testing::SyntheticTour tour(rgnav::testing::ringCorridor(), rgnav::testing::kTourDrift);
-    tour.setReports(21, rgnav::testing::DoorReports::None);
+    tour.setReports(DetectorGatewayId{21}, rgnav::testing::DoorReports::None);
     tour.driveThrough({{6.1, 1}, {7.3, 1}});
     RgMappingKernel k;
     for (const rgnav::testing::KernelInput& in : tour.inputs()) rgnav::testing::feed(k, in);
     const StoredScan& at = *tour.inputs().back().scan;
     k.addGatewayEvent(cornerEvent(1, GatewayEventKind::Detected, at), at.corrected);
     k.addGatewayEvent(cornerEvent(2, GatewayEventKind::Updated, at), at.corrected);
-    const Gateway& corner = k.state().gateways.at(1);
+    const Gateway& corner = k.state().gateways.at(GatewayId{1});
     CPPUNIT_ASSERT_EQUAL(RegionId(0), corner.sides[kSideA].region);
     CPPUNIT_ASSERT_EQUAL(RegionId(0), corner.sides[kSideB].region);
-    CPPUNIT_ASSERT(k.state().regions.at(1).gateways.empty());
+    CPPUNIT_ASSERT(k.state().regions.at(RegionId{1}).gateways.empty());
   }
 
   // A "turn" in the middle of an open room (the square x, y in [4, 6] of a 10 x 10 m room): the
@@ -315,20 +315,20 @@ class RgMappingKernelTest : public CppUnit::TestFixture {
         k, tour.inputs(), [](const StoredScan& at) { return at.corrected.x >= 2.0; },
         report(1, GatewayEventKind::Detected), [](const StoredScan& at) { return at.corrected.y > 6.5; },
         report(2, GatewayEventKind::Traversed)));
-    CPPUNIT_ASSERT(!areaSeparatesSides(k.state(), 1, 0, 1, {}));
+    CPPUNIT_ASSERT(!areaSeparatesSides(k.state(), GatewayId{1}, 0, 1, {}));
     CPPUNIT_ASSERT_EQUAL(std::size_t(1), k.state().regions.size());
-    CPPUNIT_ASSERT(k.state().gateways.at(1).neutralised);
+    CPPUNIT_ASSERT(k.state().gateways.at(GatewayId{1}).neutralised);
     CPPUNIT_ASSERT_EQUAL(std::string(), joinedViolations(k));
 
     rgnav::testing::SyntheticTour ring(rgnav::testing::ringCorridor(), rgnav::testing::kTourDrift);
-    ring.setReports(21, rgnav::testing::DoorReports::None);
+    ring.setReports(DetectorGatewayId{21}, rgnav::testing::DoorReports::None);
     ring.driveThrough({{6.1, 1}, {9, 1}, {9, 5}});
     RgMappingKernel corner;
     for (const rgnav::testing::KernelInput& in : ring.inputs()) rgnav::testing::feed(corner, in);
     const StoredScan& last = *ring.inputs().back().scan;
     corner.addGatewayEvent(cornerEvent(1, GatewayEventKind::Detected, last), last.corrected);
     corner.addGatewayEvent(cornerEvent(2, GatewayEventKind::Traversed, last), last.corrected);
-    CPPUNIT_ASSERT(areaSeparatesSides(corner.state(), 1, 0, 1, {}));
+    CPPUNIT_ASSERT(areaSeparatesSides(corner.state(), GatewayId{1}, 0, 1, {}));
   }
 
   void beamsAreCutAtEveryDoor() {
@@ -346,8 +346,8 @@ class RgMappingKernelTest : public CppUnit::TestFixture {
     // south of door 2 only and room 2 saw it from the north (and the other way round). Room 1's
     // robot never stood in front of it.
     RgMapState unattached = s;
-    unattached.gateways.at(kDoor2).sides[kSideA].region = 0;
-    unattached.gateways.at(kDoor2).sides[kSideB].region = 0;
+    unattached.gateways.at(kDoor2).sides[kSideA].region = RegionId{};
+    unattached.gateways.at(kDoor2).sides[kSideB].region = RegionId{};
     CPPUNIT_ASSERT(otherDoorLines(unattached, room1).empty());
     const Region& hallway = unattached.regions.at(kHallway);
     const std::vector<GatewaySegment> cutHallway = otherDoorLines(unattached, hallway);
@@ -372,8 +372,8 @@ class RgMappingKernelTest : public CppUnit::TestFixture {
     RgMapState s = k.state();
     // A junction square between the hallway and room 2 (as if the robot had crossed it).
     Gateway area;
-    area.id = 99;
-    area.record.id = 99;
+    area.id = GatewayId{99};
+    area.record.id = DetectorGatewayId{99};
     area.record.kind = GatewayKind::HallwayArea;
     area.record.classes = {{"T-Junction", 1.0}};
     area.record.gatewayPoints = {{1, 1}, {3, 1}, {3, 3}, {1, 3}};
@@ -396,7 +396,7 @@ class RgMappingKernelTest : public CppUnit::TestFixture {
     neutralised.gateways.at(area.id).neutralised = true;
     CPPUNIT_ASSERT(otherAreaLines(neutralised, room1).empty());
     RgMapState oneSide = s;
-    oneSide.gateways.at(area.id).sides[kSideB] = {0, 2, 0};
+    oneSide.gateways.at(area.id).sides[kSideB] = {RegionId{}, 2, 0};
     CPPUNIT_ASSERT(otherAreaLines(oneSide, room1).empty());
   }
 
@@ -497,7 +497,7 @@ class RgMappingKernelTest : public CppUnit::TestFixture {
     CPPUNIT_ASSERT_EQUAL(kRoom2, *k.regionByName("lab"));
     CPPUNIT_ASSERT(!k.regionByName("kitchen"));
     CPPUNIT_ASSERT_THROW(k.nameRegion(kHallway, "office"), InvalidArgumentError);
-    CPPUNIT_ASSERT_THROW(k.nameRegion(99, "nowhere"), InvalidArgumentError);
+    CPPUNIT_ASSERT_THROW(k.nameRegion(RegionId{99}, "nowhere"), InvalidArgumentError);
     k.nameRegion(kRoom1, "office");  // again: no conflict with itself
     k.nameRegion(kRoom2, "");
     CPPUNIT_ASSERT(!k.regionByName("lab"));
@@ -525,7 +525,7 @@ class RgMappingKernelTest : public CppUnit::TestFixture {
     CPPUNIT_ASSERT((found->namedAt - truth).norm() < 0.1);  // map frame = true frame here
     CPPUNIT_ASSERT(!k.objectByName("desk"));
     CPPUNIT_ASSERT_THROW(k.nameObject(kRoom1, {cabinet.x + 2.0, cabinet.y}, "desk"), InvalidArgumentError);
-    CPPUNIT_ASSERT_THROW(k.nameObject(99, {0.0, 0.0}, "desk"), InvalidArgumentError);
+    CPPUNIT_ASSERT_THROW(k.nameObject(RegionId{99}, {0.0, 0.0}, "desk"), InvalidArgumentError);
     k.nameObject(kRoom1, {cabinet.x, cabinet.y}, "cabinet");  // renames it
     CPPUNIT_ASSERT(!k.objectByName("files"));
     CPPUNIT_ASSERT_EQUAL(std::string("cabinet"), regionView(k, kRoom1).objects[0].name);
@@ -582,7 +582,7 @@ class RgMappingKernelTest : public CppUnit::TestFixture {
     k.recordDoorState(kDoor2, false);
     const EdgeKey hallway = edgeKey(EdgeKind::Region, {kDoor1, GatewaySide::A}, {kDoor2, GatewaySide::A});
     k.recordEdgeTraversal(hallway, 5.0, 20.0);
-    CPPUNIT_ASSERT_THROW(k.recordDoorState(99, true), InvalidArgumentError);
+    CPPUNIT_ASSERT_THROW(k.recordDoorState(GatewayId{99}, true), InvalidArgumentError);
     k.nameRegion(kRoom2, "lab");  // any later change keeps them
     const RgGraph graph = k.graph();
     CPPUNIT_ASSERT_DOUBLES_EQUAL(10.0, graph.edges()[*graph.findEdge(hallway)].costM, 1e-9);
@@ -652,7 +652,7 @@ class RgMappingKernelTest : public CppUnit::TestFixture {
     CPPUNIT_ASSERT_THROW(k.addGatewayEvent(broken, event->lastScanCorrected), InvalidArgumentError);
     CPPUNIT_ASSERT_EQUAL(before,
                          std::to_string(k.state().events.size()) + "/" + std::to_string(k.state().scans.size()));
-    CPPUNIT_ASSERT_THROW(k.description(42), NotAvailableError);
+    CPPUNIT_ASSERT_THROW(k.description(RegionId{42}), NotAvailableError);
   }
 };
 

@@ -98,7 +98,7 @@ void listGateways(const std::vector<TrackedGateway>& gateways, const std::vector
     const TrackedGateway& g = gateways[k];
     std::printf("#   gateway %3zu (%6.2f, %6.2f)-(%6.2f, %6.2f) width %.2f m, support %4zu, confidence %.2f, "
                 "traversals %zu: %-7s",
-                static_cast<std::size_t>(g.id), g.right.x(), g.right.y(), g.left.x(), g.left.y(), g.widthM(),
+                static_cast<std::size_t>(g.id.value()), g.right.x(), g.right.y(), g.left.x(), g.left.y(), g.widthM(),
                 g.support, g.meanConfidence, g.traversals, outcomeName(m.outcomes[k]));
     const auto nearest = std::min_element(doors.begin(), doors.end(), [&](const TruthDoor& a, const TruthDoor& b) {
       return (a.midpoint - g.midpoint()).norm() < (b.midpoint - g.midpoint()).norm();

@@ -39,7 +39,7 @@ MapCanvas drawRegions(const OccupancyGrid& world, const GroundTruth& truth, cons
       paint(pixel, kUncovered);
   }
   for (const SegmentPixels& region : regions) {
-    const Rgb colour = regionColour(region.id);
+    const Rgb colour = regionColour(RegionId(region.id));
     for (const std::size_t pixel : region.pixels) paint(pixel, claims[pixel] > 1 ? darkened(colour) : colour);
   }
   for (const DoorLine& door : truth.doors) canvas.line({door.a.x, door.a.y}, {door.b.x, door.b.y}, kSeparator, 1);

@@ -58,7 +58,7 @@ void printRooms(const RoomScore& score, const GroundTruth& truth) {
 
 void printRegions(const RoomScore& score, const GroundTruth& truth, const MappingRun& run) {
   for (const SegmentMatch& s : score.segments) {
-    const std::vector<DataId>& scans = run.regionScans.at(s.id);
+    const std::vector<DataId>& scans = run.regionScans.at(RegionId(s.id));
     Eigen::AlignedBox2d box;
     std::map<int, std::size_t> byRoom;
     std::size_t beyond = 0;
@@ -66,7 +66,7 @@ void printRegions(const RoomScore& score, const GroundTruth& truth, const Mappin
       const Eigen::Vector2d& p = run.truePath[id - 1];
       box.extend(p);
       ++byRoom[truth.roomAt({p.x(), p.y()})];
-      beyond += beyondOwnDoor(run, s.id, p);
+      beyond += beyondOwnDoor(run, RegionId(s.id), p);
     }
     std::printf("#   region %3llu: %5zu scans (%llu..%llu) in (%.1f, %.1f)-(%.1f, %.1f), %zu beyond own doors, by room:",
                 ULL(s.id), scans.size(), ULL(scans.front()), ULL(scans.back()), box.min().x(), box.min().y(),
@@ -84,10 +84,10 @@ void printGateways(const MappingRun& run) {
   for (const GatewayView& g : run.map.gateways) {
     const Eigen::Vector2d a = transformPoint(run.mapToWorld, g.gatewayPoints.front());
     const Eigen::Vector2d b = transformPoint(run.mapToWorld, g.gatewayPoints[g.gatewayPoints.size() / 2]);
-    std::printf("#   gateway %3llu (%s) (%6.2f, %6.2f)-(%6.2f, %6.2f): regions %llu|%llu, traversals %zu%s\n", ULL(g.id),
+    std::printf("#   gateway %3llu (%s) (%6.2f, %6.2f)-(%6.2f, %6.2f): regions %llu|%llu, traversals %zu%s\n", ULL(g.id.value()),
                 g.classes.front().name == kNarrowPassageClass ? "door" : g.classes.front().name.c_str(), a.x(), a.y(),
-                b.x(), b.y(), ULL(g.sideA),
-                ULL(g.sideB), g.traversals, g.neutralised ? ", neutralised" : "");
+                b.x(), b.y(), ULL(g.sideA.value()),
+                ULL(g.sideB.value()), g.traversals, g.neutralised ? ", neutralised" : "");
   }
 }
 

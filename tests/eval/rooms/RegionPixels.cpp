@@ -19,7 +19,7 @@ std::vector<SegmentPixels> regionPixels(const FinalMap& map, const Pose2D& mapTo
   for (const Cell cell : world.cells()) free.push_back(cell == Cell::Free ? 1 : 0);
   std::vector<RegionRaster> rasters;
   for (const RegionView& region : map.regions) {
-    RegionRaster raster{std::int64_t(region.summary.id),
+    RegionRaster raster{std::int64_t(region.summary.id.value()),
                         rasteriseFreespace(region.freespace, compose(mapToWorld, region.summary.frame), frame)};
     for (std::size_t i = 0; i < free.size(); ++i) raster.claimed[i] &= free[i];
     rasters.push_back(std::move(raster));

@@ -15,7 +15,7 @@ constexpr int kWidth = 40, kHeight = 20;  // 2 x 1 m at 5 cm
 // A 0.3 x 0.3 m freespace (2 x 2 cells of 15 cm) from the region frame's origin.
 rgnav::FinalMap oneRegion(const rgnav::Pose2D& frame) {
   rgnav::RegionView region;
-  region.summary.id = 7;
+  region.summary.id = rgnav::RegionId{7};
   region.summary.frame = frame;
   region.freespace = rgnav::FreespaceBitmap::allOccupied(0.15, Eigen::Vector2d::Zero(), 2, 2);
   for (int row = 0; row < 2; ++row)

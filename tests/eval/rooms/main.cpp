@@ -142,7 +142,7 @@ Totals evaluate(const std::string& mapPath, const Options& options, const std::o
   if (options.regionPictures)
     for (const SegmentPixels& region : regions) {
       std::vector<Eigen::Vector2d> positions;
-      for (const DataId id : run.regionScans.at(region.id)) positions.push_back(run.truePath[id - 1]);
+      for (const DataId id : run.regionScans.at(RegionId(region.id))) positions.push_back(run.truePath[id - 1]);
       writeRegionImage(options.outDir + "/" + files.name + "_region" + std::to_string(region.id) + ".png", world.grid,
                        *world.truth, run.map, run.mapToWorld, region, positions);
     }

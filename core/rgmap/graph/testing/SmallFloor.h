@@ -12,8 +12,8 @@
 
 namespace rgnav::testing {
 
-inline constexpr RegionId kHallway = 1, kOffice = 2, kLab = 3, kLobby = 4;
-inline constexpr GatewayId kHallOffice = 10, kHallLab = 11, kOfficeLabDoor = 12, kHallLobby = 13, kLobbyFalse = 14;
+inline constexpr RegionId kHallway{1}, kOffice{2}, kLab{3}, kLobby{4};
+inline constexpr GatewayId kHallOffice{10}, kHallLab{11}, kOfficeLabDoor{12}, kHallLobby{13}, kLobbyFalse{14};
 
 RgGraphSpec smallFloor();
 

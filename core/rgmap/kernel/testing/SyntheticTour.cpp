@@ -29,7 +29,7 @@ TourWorld hallwayWithTwoRooms() {
   w.walls = {{{0, 0}, {12, 0}},      {{0, 0}, {0, 2}},     {{12, 0}, {12, 2}}, {{0, 2}, {3.55, 2}},
              {{4.45, 2}, {8.55, 2}}, {{9.45, 2}, {12, 2}}, {{2, 2}, {2, 6}},   {{6, 2}, {6, 6}},
              {{2, 6}, {6, 6}},       {{7, 2}, {7, 6}},     {{11, 2}, {11, 6}}, {{7, 6}, {11, 6}}};
-  w.doors = {{11, {3.55, 2}, {4.45, 2}, DoorReports::All}, {12, {8.55, 2}, {9.45, 2}, DoorReports::All}};
+  w.doors = {{DetectorGatewayId{11}, {3.55, 2}, {4.45, 2}, DoorReports::All}, {DetectorGatewayId{12}, {8.55, 2}, {9.45, 2}, DoorReports::All}};
   return w;
 }
 
@@ -45,7 +45,7 @@ TourWorld ringCorridor() {
   for (const Wall& inner : boxWalls({5, 5}, 0.0, 6, 6)) w.walls.push_back(inner);
   w.walls.push_back({{5, 0}, {5, 0.55}});
   w.walls.push_back({{5, 1.45}, {5, 2}});
-  w.doors = {{21, {5, 0.55}, {5, 1.45}, DoorReports::All}};
+  w.doors = {{DetectorGatewayId{21}, {5, 0.55}, {5, 1.45}, DoorReports::All}};
   return w;
 }
 
@@ -108,12 +108,12 @@ SyntheticTour::SyntheticTour(TourWorld world, const Pose2D& drift, double stepM,
   for (TourDoor& d : world.doors) doors_.push_back({d});
 }
 
-void SyntheticTour::setReports(GatewayId detectorId, DoorReports reports) {
+void SyntheticTour::setReports(DetectorGatewayId detectorId, DoorReports reports) {
   for (DoorState& d : doors_)
     if (d.door.detectorId == detectorId) d.door.reports = reports;
 }
 
-void SyntheticTour::redetect(GatewayId detectorId, GatewayId newId) {
+void SyntheticTour::redetect(DetectorGatewayId detectorId, DetectorGatewayId newId) {
   for (DoorState& d : doors_)
     if (d.door.detectorId == detectorId) d = DoorState{TourDoor{newId, d.door.left, d.door.right, d.door.reports}};
 }

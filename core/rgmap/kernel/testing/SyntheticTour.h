@@ -26,7 +26,7 @@ namespace rgnav::testing {
 enum class DoorReports { All, TraversalsOnly, None };
 
 struct TourDoor {
-  GatewayId detectorId = 0;
+  DetectorGatewayId detectorId;
   Eigen::Vector2d left = Eigen::Vector2d::Zero();  // gateway points, map frame
   Eigen::Vector2d right = Eigen::Vector2d::Zero();
   DoorReports reports = DoorReports::All;
@@ -73,10 +73,10 @@ class SyntheticTour {
 
   // Drives from the current position (the first waypoint on the first call) along `waypoints`.
   void driveThrough(const std::vector<Eigen::Vector2d>& waypoints);
-  void setReports(GatewayId detectorId, DoorReports reports);
+  void setReports(DetectorGatewayId detectorId, DoorReports reports);
   // The fake detector loses its track of door `detectorId` and reports the door anew, as door
   // `newId`: Detected when the robot next comes within range, crossing point 0 on its side then.
-  void redetect(GatewayId detectorId, GatewayId newId);
+  void redetect(DetectorGatewayId detectorId, DetectorGatewayId newId);
 
   const std::vector<KernelInput>& inputs() const { return inputs_; }
 
