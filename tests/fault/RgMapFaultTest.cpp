@@ -20,6 +20,7 @@
 #include "clientlibs/rgmappingkernel/RgMappingKernelClient.h"
 #include "core/logs/OpenLog.h"
 #include "tests/fault/FaultSchedule.h"
+#include "tests/fault/MappingSet.h"
 #include "tests/support/cluster/Interruption.h"
 #include "tests/support/Statistics.h"
 #include "tools/common/CommandLine.h"
@@ -39,40 +40,6 @@ struct Options {
   unsigned seed = 7;
   double toleranceM = 0.01;
 };
-
-std::vector<ClusterModule> mappingSet(const Options& options) {
-  return {{"LogPlayback",
-           {TestCluster::program("rgnav-carmen-playback"), "--log", options.log, "--speed", options.speed},
-           {"Laser", "Base"}},
-          {"ScanMapper", {TestCluster::program("rgnav-scanmapper"), "--config", TestCluster::moduleConfig("scanmapper")},
-           {"ScanMapper"},
-           {"LogPlayback"},
-           "max_restarts: 1000"},
-          {"GatewayDetection",
-           {TestCluster::program("rgnav-gatewaydetection"), "--config", TestCluster::moduleConfig("gatewaydetection"),
-            "--models", options.models},
-           {"GatewayDetection"},
-           {"LogPlayback"},
-           "max_restarts: 1000"},
-          {"RGMappingKernel",
-           {TestCluster::program("rgnav-rgmappingkernel"), "--config", TestCluster::moduleConfig("rgmappingkernel")},
-           {"RGMappingKernel"},
-           {"ScanMapper", "GatewayDetection"},
-           "max_restarts: 1000"}};
-}
-
-// Waits for the end of the map, exports it and returns the parsed JSON.
-json finishedMap(TestCluster& cluster, double limitSeconds) {
-  RgMappingKernelClient kernel(cluster.clientSettings());
-  const auto giveUp = std::chrono::steady_clock::now() + std::chrono::duration<double>(limitSeconds);
-  while (!kernel.summary().endOfData) {
-    if (std::chrono::steady_clock::now() > giveUp) throw std::runtime_error("the map was not finished in time");
-    sleepUntilOrInterrupted(std::chrono::steady_clock::now() + std::chrono::milliseconds(100));
-  }
-  kernel.exportMap("", "map", false);  // into the kernel's default export root, <run dir>/exports
-  std::ifstream in(cluster.dir() + "/run/exports/map.rgmap.json");
-  return json::parse(in);
-}
 
 // Compares two exported maps; structural differences go to `differences`, the largest
 // difference of a pose or position is returned.
@@ -137,13 +104,13 @@ int main(int argc, char** argv) {
 
     json reference;
     {
-      TestCluster cluster(mappingSet(options), fastBackoff);
+      TestCluster cluster(mappingSet(options.log, options.models, options.speed), fastBackoff);
       cluster.start();
       reference = finishedMap(cluster, replaySeconds + 300);
     }
     std::cout << "fault-free map: " << reference["summary"].dump() << std::endl;
 
-    TestCluster cluster(mappingSet(options), fastBackoff);
+    TestCluster cluster(mappingSet(options.log, options.models, options.speed), fastBackoff);
     cluster.start();
     const FaultRecord faults = injectFaults(
         cluster, {{"ScanMapper", "GatewayDetection", "RGMappingKernel"}, options.kills, 0, 0.85 * replaySeconds, options.seed});

@@ -1,0 +1,25 @@
+// MappingSet: the demo's mapping chain as a test cluster (LogPlayback -> ScanMapper ->
+// GatewayDetection -> RG Mapping Kernel, each restarted without limit), and the finished map it
+// exports, for the fault programs that compare a disturbed run's map with an undisturbed one.
+#pragma once
+
+#include <nlohmann/json.hpp>
+#include <string>
+#include <vector>
+
+#include "tests/support/cluster/TestCluster.h"
+
+namespace rgnav::testing {
+
+// log: the CARMEN log to replay; models: trained gateway HMMs; speed: "x<k>" or "realtime".
+std::vector<ClusterModule> mappingSet(const std::string& log, const std::string& models, const std::string& speed);
+
+// Waits until the kernel has taken in the whole log; throws std::runtime_error after limitSeconds.
+void waitForEndOfMap(TestCluster& cluster, double limitSeconds);
+
+// Waits until the kernel has mapped the whole log, exports the map into the kernel's export root
+// (<run dir>/exports) as `name` and returns the parsed JSON. Throws std::runtime_error after
+// limitSeconds.
+nlohmann::json finishedMap(TestCluster& cluster, double limitSeconds, const std::string& name = "map");
+
+}  // namespace rgnav::testing
