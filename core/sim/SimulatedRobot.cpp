@@ -44,14 +44,17 @@ void SimulatedRobot::step() {
   stepLocked();
 }
 
-void SimulatedRobot::advanceUntilScan(DataId id) {
+void SimulatedRobot::advanceToNextScan() {
   if (options_.clock != SimClock::LockStep) return;
-  while (scans_.latestId() < id && !scans_.endOfData()) stepLocked();
+  const DataId next = scans_.latestId() + 1;
+  while (scans_.latestId() < next && !scans_.endOfData()) stepLocked();
 }
 
 DataBatch<LaserScan> SimulatedRobot::scansSince(DataId afterId, std::size_t maxCount, const std::string&) {
   std::lock_guard lock(mutex_);
-  advanceUntilScan(afterId + 1);
+  // A consumer that has every scan pulls the next one; asking from beyond the latest scan pulls
+  // no more than that (one call never runs a whole tour, whatever afterId a caller sends).
+  if (afterId >= scans_.latestId()) advanceToNextScan();
   return scans_.since(afterId, maxCount);
 }
 

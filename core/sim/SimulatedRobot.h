@@ -38,7 +38,8 @@ class SimulatedRobot : public LaserStream, public BaseStream {
   // One simulation step (the real-time clock's tick); nothing once a tour has ended.
   void step();
 
-  // Lock-step: advances until the scan after afterId exists (any consumer paces it).
+  // Lock-step: a caller that has every scan (afterId >= the latest) makes the simulation step
+  // until the next scan exists (any consumer paces it); one call advances one scan at most.
   DataBatch<LaserScan> scansSince(DataId afterId, std::size_t maxCount, const std::string& consumer) override;
   LaserScan scan(DataId id) override;
   DataId latestScanId() override;
@@ -60,7 +61,7 @@ class SimulatedRobot : public LaserStream, public BaseStream {
 
  private:
   void stepLocked();
-  void advanceUntilScan(DataId id);  // lock-step
+  void advanceToNextScan();  // lock-step
 
   mutable std::mutex mutex_;
   LoadedWorld world_;

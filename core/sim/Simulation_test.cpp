@@ -3,6 +3,8 @@
 // and a whole room tour in a small two-room world.
 #include <cppunit/extensions/HelperMacros.h>
 
+#include <limits>
+
 #include <sstream>
 
 #include "core/sim/GroundTruthTour.h"
@@ -122,7 +124,14 @@ class SimulationTest : public CppUnit::TestFixture {
     const auto batch = robot.scansSince(0, 10, "test");
     CPPUNIT_ASSERT_EQUAL(std::size_t(1), batch.records.size());
     CPPUNIT_ASSERT_EQUAL(DataId(2), robot.latestOdometryId());
-    CPPUNIT_ASSERT_EQUAL(DataId(3), robot.scansSince(2, 10, "test").records.front().id);
+    CPPUNIT_ASSERT_EQUAL(DataId(2), robot.scansSince(1, 10, "test").records.front().id);
+    // A caller ahead of the simulation (even at 2^64-2, where afterId + 1 does not wrap) pulls
+    // one scan per call, never the rest of the run.
+    CPPUNIT_ASSERT(robot.scansSince(1000, 10, "test").records.empty());
+    CPPUNIT_ASSERT(robot.scansSince(std::numeric_limits<DataId>::max() - 1, 10, "test").records.empty());
+    CPPUNIT_ASSERT_EQUAL(DataId(4), robot.latestScanId());
+    CPPUNIT_ASSERT_EQUAL(std::size_t(4), robot.scansSince(0, 10, "test").records.size());  // behind: no step
+    CPPUNIT_ASSERT_EQUAL(DataId(4), robot.latestScanId());
     robot.setVelocity(0.5, 0.0);
     CPPUNIT_ASSERT_THROW(robot.setVelocity(NAN, 0.0), InvalidArgumentError);
     CPPUNIT_ASSERT_EQUAL(-1, robot.roomAt({-5.0, 0.0}));
