@@ -1,9 +1,10 @@
-// rgnav-faulttest-badclients (`rgctl faulttest badclients`): every server of the mapping set
-// survives every input a remote caller can give it. A log is mapped twice by the real server set
-// (playback -> ScanMapper -> GatewayDetection -> RG Mapping Kernel): once undisturbed, once while
+// rgnav-faulttest-badclients (`rgctl faulttest badclients`): every server of the demo set survives
+// every input a remote caller can give it. The demo set (config/sets/demo.yaml: the simulator's
+// lock-step tour of the office floor -> ScanMapper -> GatewayDetection -> RG Mapping Kernel; with
+// --log, a log playback instead of the simulator) maps twice: once undisturbed, once while
 // `--threads` hostile clients (HostileClient.h) call every operation of every server, the watchdog
 // included, with hostile arguments, and the watchdog restarts one module on request half way
-// (calls go on during the restart). Checks: no call ends in an unknown error (CORBA::UNKNOWN, an
+// through (by the undisturbed run's duration; calls go on during the restart). Checks: no call ends in an unknown error (CORBA::UNKNOWN, an
 // undeclared exception) or goes unanswered (a hung server), no server restarts other than the one
 // asked for, no hostile export writes outside the export root or through a symbolic link, and the
 // final map equals the undisturbed one. Last line:
@@ -33,7 +34,7 @@ using namespace rgnav::testing;
 namespace {
 
 struct Options {
-  std::string log;
+  std::string log;  // "" for the demo's simulator
   std::string models;
   std::string speed = "x60";
   unsigned threads = 4;
@@ -42,7 +43,6 @@ struct Options {
   std::string restart = "GatewayDetection";
 };
 
-const std::vector<std::string> kModules = {"LogPlayback", "ScanMapper", "GatewayDetection", "RGMappingKernel"};
 const char* const kUntouched = "not to be written by an export\n";
 
 // Symbolic links in the export root that point out of it, and the file they lead to.
@@ -69,9 +69,9 @@ struct Traps {
 };
 
 // The watchdog's restart count of every module of the set.
-std::map<std::string, std::int64_t> restartCounts(TestCluster& cluster) {
+std::map<std::string, std::int64_t> restartCounts(TestCluster& cluster, const std::vector<ClusterModule>& modules) {
   std::map<std::string, std::int64_t> counts;
-  for (const std::string& m : kModules) counts[m] = cluster.describe(m).restarts;
+  for (const ClusterModule& m : modules) counts[m.name] = cluster.describe(m.name).restarts;
   return counts;
 }
 
@@ -79,13 +79,12 @@ std::map<std::string, std::int64_t> restartCounts(TestCluster& cluster) {
 
 int main(int argc, char** argv) {
   Options options;
-  options.log = TestCluster::shared("data/laser/corrected/intel-corrected.log.gz");
   po::options_description desc("rgnav-faulttest-badclients [options]");
   desc.add_options()
       ("help", "this text")
-      ("log", po::value(&options.log)->default_value(options.log), "log to replay")
-      ("models", po::value(&options.models)->required(), "trained gateway HMMs (config/gateways/gateway-hmms.txt)")
-      ("speed", po::value(&options.speed)->default_value(options.speed), "replay speed (x<k> or realtime)")
+      ("log", po::value(&options.log)->default_value(options.log), "replay this log instead of the demo's simulator")
+      ("models", po::value(&options.models), "trained gateway HMMs for the log's set (config/gateways/gateway-hmms.txt)")
+      ("speed", po::value(&options.speed)->default_value(options.speed), "replay speed of the log (x<k> or realtime)")
       ("threads", po::value(&options.threads)->default_value(options.threads), "hostile clients calling at once")
       ("min-calls", po::value(&options.minCalls)->default_value(options.minCalls),
        "hostile calls at least (they go on after the end of the map until there are this many)")
@@ -95,29 +94,36 @@ int main(int argc, char** argv) {
   try {
     if (!parseCommandLine(argc, argv, desc)) return 0;
     if (options.threads == 0) throw po::error("--threads must be at least 1");
+    if (!options.log.empty() && options.models.empty()) throw po::error("--log needs --models");
     catchInterruptions();  // a stopped run still shuts its server sets down and removes their directories
-    const double replaySeconds = replayDuration(options.log, options.speed);
-    const auto modules = mappingSet(options.log, options.models, options.speed);
+    const bool simulator = options.log.empty();
+    const auto modules = simulator ? demoSet() : mappingSet(options.log, options.models, options.speed);
+    const double limitSeconds = simulator ? 900 : replayDuration(options.log, options.speed) + 300;
 
     nlohmann::json reference;
+    double undisturbedSeconds = 0.0;
     {
       TestCluster cluster(modules);
       cluster.start();
-      reference = finishedMap(cluster, replaySeconds + 300);
+      const auto start = std::chrono::steady_clock::now();
+      waitForEndOfMap(cluster, limitSeconds);
+      undisturbedSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+      reference = finishedMap(cluster, limitSeconds);
     }
-    std::cout << "undisturbed map: " << reference["summary"].dump() << std::endl;
+    std::cout << "undisturbed map: " << reference["summary"].dump() << " in " << undisturbedSeconds << " s" << std::endl;
 
     TestCluster cluster(modules);
     cluster.start();
     const Traps traps(cluster.dir());
-    const auto restartsBefore = restartCounts(cluster);
+    const auto restartsBefore = restartCounts(cluster, modules);
 
     HostileTally tally;
     std::atomic<bool> stop{false};
     std::vector<std::thread> clients;
     for (unsigned i = 0; i < options.threads; ++i)
       clients.emplace_back([&, i] {
-        HostileClient client(cluster.clientSettings(), HostPort{"127.0.0.1", cluster.watchdogPort()}, traps.names, i);
+        HostileClient client(cluster.clientSettings(), HostPort{"127.0.0.1", cluster.watchdogPort()}, traps.names,
+                             simulator, i);
         while (!stop) {
           client.callNext(tally);
           std::this_thread::sleep_for(std::chrono::milliseconds(options.paceMs));
@@ -129,11 +135,12 @@ int main(int argc, char** argv) {
       clients.clear();
     };
 
+    std::uint64_t whileMapping = 0;  // calls made before the kernel had the whole tour or log
     std::int64_t asked = 0;  // what the restart the run asked for added to the module's count
     try {
       if (!options.restart.empty()) {
         sleepUntilOrInterrupted(std::chrono::steady_clock::now() + std::chrono::duration_cast<std::chrono::steady_clock::duration>(
-                                                                     std::chrono::duration<double>(0.5 * replaySeconds)));
+                                                                     std::chrono::duration<double>(0.5 * undisturbedSeconds)));
         const auto old = cluster.describe(options.restart);
         cluster.watchdog().restartModule(options.restart);
         const auto again =
@@ -141,7 +148,8 @@ int main(int argc, char** argv) {
                             "running again after the restart", std::chrono::seconds(60));
         asked = std::int64_t(again.restarts) - std::int64_t(old.restarts);
       }
-      waitForEndOfMap(cluster, replaySeconds + 300);
+      waitForEndOfMap(cluster, limitSeconds);
+      whileMapping = tally.calls;
       while (tally.calls < options.minCalls)
         sleepUntilOrInterrupted(std::chrono::steady_clock::now() + std::chrono::milliseconds(100));
     } catch (...) {
@@ -150,15 +158,16 @@ int main(int argc, char** argv) {
     }
     stopClients();
 
-    const auto restartsAfter = restartCounts(cluster);
+    const auto restartsAfter = restartCounts(cluster, modules);
     std::int64_t unexpectedRestarts = 0;
-    for (const std::string& m : kModules)
-      unexpectedRestarts += restartsAfter.at(m) - restartsBefore.at(m) - (m == options.restart ? asked : 0);
+    for (const auto& [name, before] : restartsBefore)
+      unexpectedRestarts += restartsAfter.at(name) - before - (name == options.restart ? asked : 0);
     const nlohmann::json disturbed = finishedMap(cluster, 60);
     std::cout << "map under hostile calls: " << disturbed["summary"].dump() << std::endl;
     for (const std::string& note : tally.notes()) std::cout << "call: " << note << "\n";
-    std::printf("badclients_by_kind: accepted=%llu invalid_argument=%llu not_available=%llu not_supported=%llu failed=%llu\n",
-                static_cast<unsigned long long>(tally.accepted.load()),
+    std::printf("badclients_by_kind: while_mapping=%llu accepted=%llu invalid_argument=%llu not_available=%llu "
+                "not_supported=%llu failed=%llu\n",
+                static_cast<unsigned long long>(whileMapping), static_cast<unsigned long long>(tally.accepted.load()),
                 static_cast<unsigned long long>(tally.invalidArgument.load()),
                 static_cast<unsigned long long>(tally.notAvailable.load()),
                 static_cast<unsigned long long>(tally.notSupported.load()),

@@ -58,15 +58,18 @@ std::vector<std::string> HostileTally::notes() const {
   return notes_;
 }
 
-HostileClient::HostileClient(const ClientSettings& settings, const HostPort& watchdog, ExportTraps traps, unsigned seed)
+HostileClient::HostileClient(const ClientSettings& settings, const HostPort& watchdog, ExportTraps traps,
+                             bool groundTruth, unsigned seed)
     : laser_("Laser", settings),
       base_("Base", settings),
+      groundTruth_("GroundTruth", settings),
       scanMapper_("ScanMapper", settings),
       detection_("GatewayDetection", settings),
       kernel_("RGMappingKernel", settings),
       watchdog_("Watchdog", settings, watchdog),
       requests_(std::uint64_t(seed) << 32) {
-  addPlaybackCalls();
+  addSensorCalls();
+  if (groundTruth) addGroundTruthCalls();
   addScanMapperCalls();
   addDetectionCalls();
   addKernelCalls(traps);
@@ -74,7 +77,7 @@ HostileClient::HostileClient(const ClientSettings& settings, const HostPort& wat
   next_ = seed % calls_.size();
 }
 
-void HostileClient::addPlaybackCalls() {
+void HostileClient::addSensorCalls() {
   std::vector<HostileCall>& c = calls_;
   using L = RGNav::Laser_ptr;
   using B = RGNav::Base_ptr;
@@ -94,8 +97,22 @@ void HostileClient::addPlaybackCalls() {
       [](B b) { return b->odometryAt(RGNav::Time{std::numeric_limits<CORBA::LongLong>::min(), 0}); });
   add(c, base_, "Base.setVelocity(NaN)", [](B b) { b->setVelocity(kNaN, kInf); }, Idempotence::NotIdempotent);
   add(c, base_, "Base.setVelocity(-inf)", [](B b) { b->setVelocity(-kInf, 0.0); }, Idempotence::NotIdempotent);
-  // A well-formed command a log playback cannot carry out.
-  add(c, base_, "Base.setVelocity(playback)", [](B b) { b->setVelocity(0.2, 0.1); }, Idempotence::NotIdempotent);
+  // A well-formed command that neither a log playback nor a touring simulator carries out.
+  add(c, base_, "Base.setVelocity(while touring)", [](B b) { b->setVelocity(0.2, 0.1); }, Idempotence::NotIdempotent);
+}
+
+void HostileClient::addGroundTruthCalls() {
+  std::vector<HostileCall>& c = calls_;
+  using T = RGNav::GroundTruth_ptr;
+  add(c, groundTruth_, "GroundTruth.ping", [](T t) { t->ping(); });
+  add(c, groundTruth_, "GroundTruth.status", [](T t) { return t->status(); });
+  add(c, groundTruth_, "GroundTruth.truePose(0)", [](T t) { return t->truePose(0); });
+  add(c, groundTruth_, "GroundTruth.truePose(huge)", [](T t) { return t->truePose(kHugeId); });
+  add(c, groundTruth_, "GroundTruth.roomAt(NaN)", [](T t) { return t->roomAt(kNaN, 0.0); });
+  add(c, groundTruth_, "GroundTruth.roomAt(inf)", [](T t) { return t->roomAt(kInf, -kInf); });
+  add(c, groundTruth_, "GroundTruth.roomAt(far)", [](T t) { return t->roomAt(1e308, -1e308); });
+  add(c, groundTruth_, "GroundTruth.roomCount", [](T t) { return t->roomCount(); });
+  add(c, groundTruth_, "GroundTruth.doorLines", [](T t) { return t->doorLines(); });
 }
 
 void HostileClient::addScanMapperCalls() {

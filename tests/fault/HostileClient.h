@@ -1,6 +1,6 @@
 // HostileClient: a remote caller that calls every operation of every server of the mapping set
-// (LogPlayback's Laser and Base, ScanMapper, GatewayDetection, the RG Mapping Kernel and the
-// watchdog) with arguments no well-behaved client sends: NaN and infinite coordinates, IDs 0 and
+// (the simulator's or a log playback's Laser and Base, the simulator's GroundTruth, ScanMapper,
+// GatewayDetection, the RG Mapping Kernel and the watchdog) with arguments no well-behaved client sends: NaN and infinite coordinates, IDs 0 and
 // 2^64-1, counts of 2^32-1, names with control characters or over the length bound, request ID
 // 0, merges of a region with itself and with a region that does not exist, exports to /etc, to
 // a directory behind a symbolic link and over a symbolic link, and unknown watchdog modules.
@@ -18,6 +18,7 @@
 
 #include "Base.hh"
 #include "GatewayDetection.hh"
+#include "GroundTruth.hh"
 #include "Laser.hh"
 #include "RGMappingKernel.hh"
 #include "ScanMapper.hh"
@@ -58,7 +59,9 @@ class HostileClient {
  public:
   // One client per thread; `seed` sets where its request IDs and its turn through the calls start,
   // so that threads send the same calls at different times.
-  HostileClient(const ClientSettings& settings, const HostPort& watchdog, ExportTraps traps, unsigned seed);
+  // groundTruth: the set has a simulator, whose GroundTruth object is called too.
+  HostileClient(const ClientSettings& settings, const HostPort& watchdog, ExportTraps traps, bool groundTruth,
+                unsigned seed);
   HostileClient(const HostileClient&) = delete;  // its calls refer to its connections
   HostileClient& operator=(const HostileClient&) = delete;
 
@@ -67,7 +70,8 @@ class HostileClient {
   std::size_t operations() const { return calls_.size(); }
 
  private:
-  void addPlaybackCalls();
+  void addSensorCalls();
+  void addGroundTruthCalls();
   void addScanMapperCalls();
   void addDetectionCalls();
   void addKernelCalls(const ExportTraps& traps);
@@ -76,6 +80,7 @@ class HostileClient {
 
   TypedConnection<RGNav::Laser> laser_;
   TypedConnection<RGNav::Base> base_;
+  TypedConnection<RGNav::GroundTruth> groundTruth_;
   TypedConnection<RGNav::ScanMapper> scanMapper_;
   TypedConnection<RGNav::GatewayDetection> detection_;
   TypedConnection<RGNav::RGMappingKernel> kernel_;

@@ -1,12 +1,18 @@
 // The mapping chain as a test cluster, and its finished map (see MappingSet.h).
 #include "tests/fault/MappingSet.h"
 
+#include <algorithm>
 #include <chrono>
+#include <filesystem>
 #include <fstream>
 #include <stdexcept>
 
 #include "clientlibs/rgmappingkernel/RgMappingKernelClient.h"
+#include "core/config/ShippedConfig.h"
+#include "core/supervision/SetConfig.h"
 #include "tests/support/cluster/Interruption.h"
+
+namespace fs = std::filesystem;
 
 namespace rgnav::testing {
 
@@ -36,6 +42,20 @@ void waitForEndOfMap(TestCluster& cluster, double limitSeconds) {
     if (std::chrono::steady_clock::now() > giveUp) throw std::runtime_error("the map was not finished in time");
     sleepUntilOrInterrupted(std::chrono::steady_clock::now() + std::chrono::milliseconds(100));
   }
+}
+
+std::vector<ClusterModule> demoSet() {
+  const std::string setFile = shippedConfigFile("sets/demo.yaml");
+  const std::string root = fs::path(setFile).parent_path().parent_path().parent_path().string();
+  const SetConfig set = loadSetConfig(setFile, {{"RGNAV_BIN", fs::path(TestCluster::program("rgnav-sim")).parent_path().string()}, {"RGNAV_ROOT", root}}, root);
+  std::vector<ClusterModule> modules;
+  for (const ModuleSpec& m : set.modules) {
+    std::vector<std::string> command = m.command;
+    const auto exportRoot = std::find(command.begin(), command.end(), "--export-root");
+    if (exportRoot != command.end()) command.erase(exportRoot, std::min(exportRoot + 2, command.end()));
+    modules.push_back({m.name, command, m.objects, m.after, "max_restarts: 1000"});
+  }
+  return modules;
 }
 
 nlohmann::json finishedMap(TestCluster& cluster, double limitSeconds, const std::string& name) {

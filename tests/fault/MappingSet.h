@@ -1,6 +1,7 @@
-// MappingSet: the demo's mapping chain as a test cluster (LogPlayback -> ScanMapper ->
-// GatewayDetection -> RG Mapping Kernel, each restarted without limit), and the finished map it
-// exports, for the fault programs that compare a disturbed run's map with an undisturbed one.
+// MappingSet: the mapping chain as a test cluster (a log playback or the demo's simulator ->
+// ScanMapper -> GatewayDetection -> RG Mapping Kernel, each restarted without limit), and the
+// finished map it exports, for the fault programs that compare a disturbed run's map with an
+// undisturbed one.
 #pragma once
 
 #include <nlohmann/json.hpp>
@@ -13,6 +14,11 @@ namespace rgnav::testing {
 
 // log: the CARMEN log to replay; models: trained gateway HMMs; speed: "x<k>" or "realtime".
 std::vector<ClusterModule> mappingSet(const std::string& log, const std::string& models, const std::string& speed);
+
+// The modules of config/sets/demo.yaml (the simulator's lock-step tour of the office floor and the
+// mapping chain), each restarted without limit; the kernel exports into the cluster's run
+// directory instead of the project's out/.
+std::vector<ClusterModule> demoSet();
 
 // Waits until the kernel has taken in the whole log; throws std::runtime_error after limitSeconds.
 void waitForEndOfMap(TestCluster& cluster, double limitSeconds);
