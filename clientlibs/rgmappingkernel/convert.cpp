@@ -145,11 +145,13 @@ PathView fromIdl(const RGNav::RgPath& path) {
 
 RGNav::RgMapSummary toIdl(const MapSummaryView& s) {
   return RGNav::RgMapSummary{static_cast<CORBA::ULong>(s.regions), static_cast<CORBA::ULong>(s.gateways),
-                             static_cast<CORBA::ULong>(s.neutralised), s.lastScan, s.lastEvent, s.current.value(), s.endOfData};
+                             static_cast<CORBA::ULong>(s.neutralised), static_cast<CORBA::ULong>(s.hypotheses), s.lastScan,
+                             s.lastEvent, s.current.value(), s.endOfData};
 }
 
 MapSummaryView fromIdl(const RGNav::RgMapSummary& s) {
-  return {s.regions, s.gateways, s.neutralized, s.lastScan, s.lastEvent, RegionId(s.current), static_cast<bool>(s.endOfData)};
+  return {s.regions,   s.gateways,          s.neutralized, s.hypotheses, s.lastScan,
+          s.lastEvent, RegionId(s.current), static_cast<bool>(s.endOfData)};
 }
 
 RGNav::RgMapEventBatch toIdl(const RgMapEventBatch& b) {

@@ -76,7 +76,7 @@ class RgMappingKernelConvertTest : public CppUnit::TestFixture {
   }
 
   void summaryAndEventsRoundTrip() {
-    const MapSummaryView s{5, 6, 1, 900, 40, RegionId{3}, true};
+    const MapSummaryView s{5, 6, 1, 2, 900, 40, RegionId{3}, true};
     CPPUNIT_ASSERT(fromIdl(toIdl(s)) == s);
     RgMapEventBatch b;
     b.events = {{7, RgMapEventKind::RegionsMerged, RegionId{2}, RegionId{5}, GatewayId{}, 311},

@@ -2,7 +2,8 @@
 //   rgnav-rgmap build --label demo --out <dir> --name demo
 //       follows the map while it is built (a progress line on stderr), waits for the end of the
 //       inputs, exports <dir>/<name>.rgmap.json/.svg/.png and prints
-//       "<label>: scans=… regions=… gateways=… neutralized=… scans_per_s=…"
+//       "<label>: scans=… regions=… gateways=… neutralized=… hypotheses=… scans_per_s=…"
+//       (gateways: the map's; hypotheses: detected gateways no region has taken in)
 //   rgnav-rgmap regions | gateways | events
 //   rgnav-rgmap name <region> <name> | merge <a> <b> | path <region> <x> <y> <region> <x> <y>
 //   rgnav-rgmap name-object <region> <x> <y> <name> (x, y in the region frame) | object <name>
@@ -45,8 +46,8 @@ int build(RgMappingKernelClient& kernel, const std::string& label, const std::st
   const double seconds = secondsSince(start);
   if (progress) std::fprintf(stderr, "\n");
   std::cout << kernel.exportMap(out, name, occupancy);
-  std::printf("%s: scans=%llu regions=%zu gateways=%zu neutralized=%zu scans_per_s=%.1f\n", label.c_str(),
-              static_cast<unsigned long long>(s.lastScan), s.regions, s.gateways, s.neutralised,
+  std::printf("%s: scans=%llu regions=%zu gateways=%zu neutralized=%zu hypotheses=%zu scans_per_s=%.1f\n", label.c_str(),
+              static_cast<unsigned long long>(s.lastScan), s.regions, s.gateways, s.neutralised, s.hypotheses,
               double(s.lastScan - first) / std::max(seconds, 1e-3));
   return 0;
 }

@@ -151,6 +151,7 @@ Json summary(const RgMapSnapshot& map) {
   return {{"regions", map.regions.size()},
           {"gateways", map.gateways.size()},
           {"neutralisedGateways", neutralised},
+          {"gatewayHypotheses", map.hypotheses.size()},
           {"scans", map.scanCount},
           {"lastScanId", map.lastScanId},
           {"lastEventId", map.lastEventId},
@@ -163,14 +164,16 @@ Json summary(const RgMapSnapshot& map) {
 }  // namespace
 
 std::string exportRgMapJson(const RgMapSnapshot& map) {
-  Json regions = Json::array(), gateways = Json::array();
+  Json regions = Json::array(), gateways = Json::array(), hypotheses = Json::array();
   for (const RegionSnapshot& r : map.regions) regions.push_back(region(r));
   for (const GatewaySnapshot& g : map.gateways) gateways.push_back(gateway(g));
+  for (const GatewaySnapshot& g : map.hypotheses) hypotheses.push_back(gateway(g));
   const Json root = {{"format", kRgMapJsonFormat},
                      {"version", kRgMapJsonVersion},
                      {"summary", summary(map)},
                      {"regions", regions},
                      {"gateways", gateways},
+                     {"gatewayHypotheses", hypotheses},
                      {"graph", graph(map)}};
   return root.dump() + "\n";
 }

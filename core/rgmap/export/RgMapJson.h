@@ -1,6 +1,6 @@
 // exportRgMapJson: an RG Map as a documented, versioned JSON file for users of the map (thesis 2.1:
 // regions with their line maps and descriptions, gateways with their classes and sides, the RG
-// Graph of 2.1.3): {"format": "rgnav-rgmap", "version": 1, ...}. The schema, with every field,
+// Graph of 2.1.3): {"format": "rgnav-rgmap", "version": 2, ...}. The schema, with every field,
 // its unit and frame, is RGMAP_JSON.md beside this file.
 // Not the kernel's checkpoint (RgMapCodec.h), which holds the whole state with every scan so that
 // the kernel can resume; this is the map as a user sees it, without the scans, and is not read
@@ -16,7 +16,7 @@
 namespace rgnav {
 
 inline constexpr const char* kRgMapJsonFormat = "rgnav-rgmap";
-inline constexpr int kRgMapJsonVersion = 1;
+inline constexpr int kRgMapJsonVersion = 2;
 
 // The JSON text, ending in a newline.
 std::string exportRgMapJson(const RgMapSnapshot& map);

@@ -1,7 +1,8 @@
 // Tests the RG Map's JSON export on the map of the two-room tour: it parses back with the right
 // format, counts, IDs and fields, gateways in the map frame with their sides, the RG Graph, the
 // freespace bits decoding to the region's bitmap, rounded values, the same bytes for the same
-// map and an atomically written file.
+// map and an atomically written file; a crossing seen but never traversed is exported as a
+// gateway hypothesis, apart from the map's gateways, each of which has a region on a side.
 #include "core/rgmap/export/RgMapJson.h"
 
 #include <cppunit/extensions/HelperMacros.h>
@@ -15,6 +16,7 @@
 #include "core/logs/LogTestFiles.h"
 #include "core/rgmap/export/Base64.h"
 #include "core/rgmap/export/testing/ExportedFloor.h"
+#include "core/rgmap/kernel/testing/SyntheticTour.h"
 
 using namespace rgnav;
 using nlohmann::json;
@@ -29,6 +31,7 @@ class RgMapJsonTest : public CppUnit::TestFixture {
   CPPUNIT_TEST(sameMapGivesSameBytes);
   CPPUNIT_TEST(valuesAreRounded);
   CPPUNIT_TEST(fileIsWritten);
+  CPPUNIT_TEST(unreachedAreaIsAHypothesis);
   CPPUNIT_TEST_SUITE_END();
 
  public:
@@ -41,7 +44,7 @@ class RgMapJsonTest : public CppUnit::TestFixture {
 
   void parsesWithFormatAndCounts() {
     CPPUNIT_ASSERT_EQUAL(std::string("rgnav-rgmap"), doc_["format"].get<std::string>());
-    CPPUNIT_ASSERT_EQUAL(1, doc_["version"].get<int>());
+    CPPUNIT_ASSERT_EQUAL(2, doc_["version"].get<int>());
     const json& s = doc_["summary"];
     CPPUNIT_ASSERT_EQUAL(std::size_t(3), s["regions"].get<std::size_t>());
     CPPUNIT_ASSERT_EQUAL(std::size_t(2), s["gateways"].get<std::size_t>());
@@ -159,6 +162,48 @@ class RgMapJsonTest : public CppUnit::TestFixture {
     CPPUNIT_ASSERT(!std::regex_search(text_, std::regex("[0-9]\\.[0-9]{5,}")));
     CPPUNIT_ASSERT(!std::regex_search(text_, std::regex("[0-9][eE][-+]?[0-9]")));
     CPPUNIT_ASSERT_EQUAL('\n', text_.back());
+  }
+
+  // The invariant of the map's gateways: each one lies in a region (on one side at least).
+  static void checkGatewaysInRegions(const json& doc) {
+    for (const json& g : doc["gateways"])
+      CPPUNIT_ASSERT_MESSAGE("gateway " + g["id"].dump() + " lies in no region",
+                             !g["sides"][0]["region"].is_null() || !g["sides"][1]["region"].is_null());
+    for (const json& g : doc["gatewayHypotheses"])
+      CPPUNIT_ASSERT(g["sides"][0]["region"].is_null() && g["sides"][1]["region"].is_null());
+    CPPUNIT_ASSERT_EQUAL(doc["gateways"].size(), doc["summary"]["gateways"].get<std::size_t>());
+    CPPUNIT_ASSERT_EQUAL(doc["gatewayHypotheses"].size(), doc["summary"]["gatewayHypotheses"].get<std::size_t>());
+  }
+
+  void unreachedAreaIsAHypothesis() {
+    checkGatewaysInRegions(doc_);
+    CPPUNIT_ASSERT(doc_["gatewayHypotheses"].empty());
+    // A crossing the detector reports at the end of the two-room tour, east of the hallway's end:
+    // never traversed, so no region has taken it in.
+    const std::vector<testing::KernelInput> inputs = testing::twoRoomTour().inputs();
+    RgMappingKernel k = testing::mapped(inputs, inputs.size());
+    const StoredScan& last = *std::find_if(inputs.rbegin(), inputs.rend(), [](const auto& in) { return in.scan.has_value(); })->scan;
+    const auto odom = [](double x, double y) { return transformPoint(testing::kTourDrift, Eigen::Vector2d(x, y)); };
+    GatewayEvent e;
+    e.id = 1000;
+    e.scanId = last.scan.id;
+    GatewayRecord& r = e.gateway;
+    r.id = DetectorGatewayId{99};
+    r.kind = GatewayKind::HallwayArea;
+    r.classes = {{"T-Junction", 0.9}};
+    r.gatewayPoints = {odom(12, 2), odom(14, 2), odom(14, 0), odom(12, 0)};
+    r.crossingPoints = {odom(11.5, 1), odom(13, 2.5), odom(14.5, 1), odom(13, -0.5)};
+    r.widthM = 2.0;
+    r.support = 2;
+    r.firstScan = r.lastScan = last.scan.id;
+    r.lastPose = last.scan.odometry;
+    testing::feed(k, {std::nullopt, e, last.corrected});
+    const json doc = json::parse(exportRgMapJson(snapshotOf(k)));
+    checkGatewaysInRegions(doc);
+    CPPUNIT_ASSERT_EQUAL(doc_["gateways"], doc["gateways"]);
+    CPPUNIT_ASSERT_EQUAL(std::size_t(1), doc["gatewayHypotheses"].size());
+    CPPUNIT_ASSERT_EQUAL(std::uint64_t(99), doc["gatewayHypotheses"][0]["detectorId"].get<std::uint64_t>());
+    CPPUNIT_ASSERT_EQUAL(doc_["graph"], doc["graph"]);
   }
 
   void fileIsWritten() {

@@ -44,7 +44,8 @@ RgMapSnapshot snapshotOf(const RgMappingKernel& kernel) {
   RgMapSnapshot out;
   for (const auto& [id, region] : state.regions)
     out.regions.push_back({region, kernel.lineMap(id).lines(), kernel.description(id)});
-  for (const auto& [id, gateway] : state.gateways) out.gateways.push_back({gateway, placeGateway(gateway)});
+  for (const auto& [id, gateway] : state.gateways)
+    (gateway.inMap() ? out.gateways : out.hypotheses).push_back({gateway, placeGateway(gateway)});
   const RgGraph graph = kernel.graph();
   out.graphNodes = graph.nodes();
   out.graphEdges = graph.edges();

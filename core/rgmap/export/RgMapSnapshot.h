@@ -36,7 +36,8 @@ struct GatewaySnapshot {
 
 struct RgMapSnapshot {
   std::vector<RegionSnapshot> regions;    // ascending ID
-  std::vector<GatewaySnapshot> gateways;  // ascending ID
+  std::vector<GatewaySnapshot> gateways;    // the map's (Gateway::inMap), ascending ID
+  std::vector<GatewaySnapshot> hypotheses;  // detected gateways no region has taken in, ascending ID
   std::vector<RgNode> graphNodes;         // RgGraph::nodes(), map frame
   std::vector<RgEdge> graphEdges;         // RgGraph::edges()
   std::size_t scanCount = 0;              // aligned scans the map holds

@@ -68,6 +68,9 @@ struct Gateway {
   std::vector<DetectorGatewayId> aliases;
 
   bool door() const { return record.kind == GatewayKind::NarrowPassage; }
+  // A gateway of the map joins at least one region; one with no region on either side (detected,
+  // never traversed, e.g. a turn the robot only saw) is still a hypothesis.
+  bool inMap() const { return !sides[0].region.isNone() || !sides[1].region.isNone(); }
 
   friend bool operator==(const Gateway&, const Gateway&) = default;
 };

@@ -74,8 +74,10 @@ MapSummaryView mapSummary(const RgMappingKernel& kernel) {
   const RgMapState& s = kernel.state();
   MapSummaryView v;
   v.regions = s.regions.size();
-  v.gateways = s.gateways.size();
-  for (const auto& [id, g] : s.gateways) v.neutralised += g.neutralised;
+  for (const auto& [id, g] : s.gateways) {
+    (g.inMap() ? v.gateways : v.hypotheses) += 1;
+    v.neutralised += g.neutralised;
+  }
   v.lastScan = s.lastScanId;
   v.lastEvent = s.events.empty() ? 0 : s.events.back().id;
   v.current = s.current;

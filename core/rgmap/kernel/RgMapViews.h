@@ -102,6 +102,7 @@ struct PathView {
 
 struct MapSummaryView {
   std::size_t regions = 0, gateways = 0, neutralised = 0;
+  std::size_t hypotheses = 0;  // gateways without a region yet (Gateway::inMap), not in `gateways`
   DataId lastScan = 0;
   RgMapEventId lastEvent = 0;
   RegionId current;
