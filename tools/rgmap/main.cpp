@@ -58,8 +58,10 @@ int build(RgMappingKernelClient& kernel, const std::string& label, const std::st
 
 void printRegions(RgMappingKernelClient& kernel) {
   for (const RegionSummaryView& r : kernel.regions()) {
-    std::printf("region %llu%s%s frame=%.2f,%.2f,%.3f scans=%zu gateways=%zu%s\n", static_cast<unsigned long long>(r.id.value()),
-                r.name.empty() ? "" : " ", r.name.empty() ? "" : quotedText(r.name).c_str(), r.frame.x, r.frame.y, r.frame.theta, r.scans,
+    std::string name;
+    if (!r.name.empty()) name.append(" ").append(quotedText(r.name));
+    std::printf("region %llu%s frame=%.2f,%.2f,%.3f scans=%zu gateways=%zu%s\n", static_cast<unsigned long long>(r.id.value()),
+                name.c_str(), r.frame.x, r.frame.y, r.frame.theta, r.scans,
                 r.gateways.size(), r.finalised ? "" : " (current)");
   }
 }

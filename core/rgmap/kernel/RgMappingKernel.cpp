@@ -355,7 +355,8 @@ RegionId RgMappingKernel::mergeRegions(RegionId a, RegionId b, bool force) {
   const std::string pair = "region " + std::to_string(a.value()) + " and region " + std::to_string(b.value());
   if (a == b) throw InvalidArgumentError("cannot merge " + pair + ": they are the same region");
   for (const RegionId r : {a, b})
-    if (!state_.regions.contains(r)) throw InvalidArgumentError("cannot merge " + pair + ": no region " + std::to_string(r.value()));
+    if (!state_.regions.contains(r))
+      throw InvalidArgumentError("cannot merge " + pair + ": no region " + std::to_string(r.value()));
   if (!force && !shareGateway(state_, a, b))
     throw InvalidArgumentError("cannot merge " + pair + ": they share no gateway (force the merge if they are one place)");
   const RegionId merged = rgnav::mergeRegions(state_, a, b, state_.lastScanId);
@@ -380,7 +381,8 @@ std::optional<RegionId> RgMappingKernel::regionByName(const std::string& name) c
 }
 
 void RgMappingKernel::nameObject(RegionId region, const Eigen::Vector2d& atInRegion, const std::string& name) {
-  if (!atInRegion.allFinite()) throw InvalidArgumentError("an object is named at a finite point, not a NaN or infinite one");
+  if (!atInRegion.allFinite())
+    throw InvalidArgumentError("an object is named at a finite point, not a NaN or infinite one");
   const auto r = state_.regions.find(region);
   if (r == state_.regions.end()) throw InvalidArgumentError("no region " + std::to_string(region.value()));
   const std::vector<Rectangle2D>& objects = description(region).objects;
