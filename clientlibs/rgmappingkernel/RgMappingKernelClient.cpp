@@ -101,9 +101,10 @@ RgMappingKernel::NamedObject RgMappingKernelClient::objectByName(const std::stri
   return connection_.call("objectByName", [&](Kernel k) { return fromIdl(k->objectByName(name.c_str())); });
 }
 
-RegionId RgMappingKernelClient::mergeRegions(RegionId a, RegionId b) {
+RegionId RgMappingKernelClient::mergeRegions(RegionId a, RegionId b, bool force) {
   const RequestId request = newRequestId();
-  return connection_.call("mergeRegions", [&](Kernel k) { return RegionId(k->mergeRegions(request, a.value(), b.value())); });
+  return connection_.call("mergeRegions",
+                          [&](Kernel k) { return RegionId(k->mergeRegions(request, a.value(), b.value(), force)); });
 }
 
 RgMapEventBatch RgMappingKernelClient::eventsSince(RgMapEventId afterId, std::uint32_t maxCount) {

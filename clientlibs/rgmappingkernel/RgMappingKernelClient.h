@@ -32,7 +32,8 @@ class RgMappingKernelClient : public ModuleClientOf<RGNav::RGMappingKernel> {
   RegionId regionByName(const std::string& name);
   void nameObject(RegionId region, const Eigen::Vector2d& atInRegion, const std::string& name);
   RgMappingKernel::NamedObject objectByName(const std::string& name);
-  RegionId mergeRegions(RegionId a, RegionId b);
+  // Regions that share no gateway are refused (InvalidArgumentError) unless `force`.
+  RegionId mergeRegions(RegionId a, RegionId b, bool force = false);
   RgMapEventBatch eventsSince(RgMapEventId afterId, std::uint32_t maxCount);
   // The files written, one per line; `directory` is relative to the kernel's export root (""
   // for the root) or absolute inside it (RGMappingKernel.idl). Describing and drawing a large map takes long (an outdoor

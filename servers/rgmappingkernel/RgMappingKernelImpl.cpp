@@ -88,12 +88,13 @@ RGNav::NamedObject RgMappingKernelImpl::objectByName(const char* name) {
   return serve(kLookup, [&] { return toIdl(service_.objectByName(wire::checkedName(name, "name", false))); });
 }
 
-RGNav::RegionId RgMappingKernelImpl::mergeRegions(RGNav::RequestId requestId, RGNav::RegionId a, RGNav::RegionId b) {
+RGNav::RegionId RgMappingKernelImpl::mergeRegions(RGNav::RequestId requestId, RGNav::RegionId a, RGNav::RegionId b,
+                                                  CORBA::Boolean force) {
   return serve(kArgs, [&] {
     wire::requireId(requestId, "requestId");
     wire::requireId(a, "a");
     wire::requireId(b, "b");
-    return service_.mergeRegions(requestId, RegionId(a), RegionId(b)).value();
+    return service_.mergeRegions(requestId, RegionId(a), RegionId(b), force).value();
   });
 }
 

@@ -27,7 +27,8 @@ class RgMappingKernelImpl : public ServiceServant<POA_RGNav::RGMappingKernel> {
   void nameObject(RGNav::RequestId requestId, RGNav::RegionId region, const RGNav::Point2D& atInRegion,
                   const char* name) override;
   RGNav::NamedObject objectByName(const char* name) override;
-  RGNav::RegionId mergeRegions(RGNav::RequestId requestId, RGNav::RegionId a, RGNav::RegionId b) override;
+  RGNav::RegionId mergeRegions(RGNav::RequestId requestId, RGNav::RegionId a, RGNav::RegionId b,
+                               CORBA::Boolean force) override;
   RGNav::RgMapEventBatch* eventsSince(RGNav::RgMapEventId afterId, CORBA::ULong maxCount, const char* consumer) override;
   char* exportMap(const char* directory, const char* name, CORBA::Boolean occupancy) override;
 

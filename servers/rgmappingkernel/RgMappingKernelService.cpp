@@ -173,10 +173,10 @@ RgMappingKernel::NamedObject RgMappingKernelService::objectByName(const std::str
   return *found;
 }
 
-RegionId RgMappingKernelService::mergeRegions(std::uint64_t requestId, RegionId a, RegionId b) {
+RegionId RgMappingKernelService::mergeRegions(std::uint64_t requestId, RegionId a, RegionId b, bool force) {
   std::lock_guard lock(mutex_);
   if (const std::optional<std::uint64_t> merged = requests_.answered(requestId)) return RegionId(*merged);
-  const RegionId merged = kernel_->mergeRegions(a, b);
+  const RegionId merged = kernel_->mergeRegions(a, b, force);
   requests_.record(requestId, merged.value());
   checkpoint();
   return merged;

@@ -62,7 +62,7 @@ class RgMappingKernelService {
   void nameObject(std::uint64_t requestId, RegionId region, const Eigen::Vector2d& atInRegion, const std::string& name);
   // Throws NotAvailableError if no object has the name.
   RgMappingKernel::NamedObject objectByName(const std::string& name);
-  RegionId mergeRegions(std::uint64_t requestId, RegionId a, RegionId b);
+  RegionId mergeRegions(std::uint64_t requestId, RegionId a, RegionId b, bool force);
   RgMapEventBatch eventsSince(RgMapEventId afterId, std::size_t maxCount);
   // What an export writes, taken under the lock (the files are written outside it).
   MapExportData exportData(bool occupancy);

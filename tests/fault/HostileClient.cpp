@@ -191,11 +191,11 @@ void HostileClient::addKernelCalls(const ExportTraps& traps) {
   add(c, kernel_, "RGMappingKernel.objectByName(unknown)", [](K k) { return k->objectByName("nothing is named so"); });
   add(c, kernel_, "RGMappingKernel.objectByName(overlong)", [](K k) { return k->objectByName(kOverlong.c_str()); });
   // Every thread merges region 1 with itself and with regions that do not exist, at once.
-  add(c, kernel_, "RGMappingKernel.mergeRegions(same)", [this](K k) { return k->mergeRegions(requestId(), 1, 1); }, once);
+  add(c, kernel_, "RGMappingKernel.mergeRegions(same)", [this](K k) { return k->mergeRegions(requestId(), 1, 1, false); }, once);
   add(c, kernel_, "RGMappingKernel.mergeRegions(unknown)",
-      [this](K k) { return k->mergeRegions(requestId(), 1, kHugeId); }, once);
-  add(c, kernel_, "RGMappingKernel.mergeRegions(0)", [this](K k) { return k->mergeRegions(requestId(), 0, 1); }, once);
-  add(c, kernel_, "RGMappingKernel.mergeRegions(request 0)", [](K k) { return k->mergeRegions(0, 1, 2); }, once);
+      [this](K k) { return k->mergeRegions(requestId(), 1, kHugeId, false); }, once);
+  add(c, kernel_, "RGMappingKernel.mergeRegions(0)", [this](K k) { return k->mergeRegions(requestId(), 0, 1, false); }, once);
+  add(c, kernel_, "RGMappingKernel.mergeRegions(request 0)", [](K k) { return k->mergeRegions(0, 1, 2, false); }, once);
   add(c, kernel_, "RGMappingKernel.eventsSince(huge)",
       [](K k) { return k->eventsSince(kHugeId, kHugeCount, kOverlong.c_str()); });
   add(c, kernel_, "RGMappingKernel.eventsSince(control)", [](K k) { return k->eventsSince(0, 0, kControl); });

@@ -8,6 +8,7 @@
 // Freiburg 079 with its dozens of pose revisions: the map does not depend on the modules' timing.
 #include <cppunit/extensions/HelperMacros.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
@@ -15,6 +16,7 @@
 #include <memory>
 #include <optional>
 #include <set>
+#include <utility>
 
 #include "clientlibs/rgmappingkernel/RgMappingKernelClient.h"
 #include "core/gateways/classify/HmmModelFile.h"
@@ -153,6 +155,20 @@ class RgMappingKernelIntegrationTest : public CppUnit::TestFixture {
     CPPUNIT_ASSERT_EQUAL(joined.sideA, kernel.regionByName("start room"));
     CPPUNIT_ASSERT_THROW(kernel.regionByName("nowhere"), NotAvailableError);
     CPPUNIT_ASSERT_THROW(kernel.mergeRegions(joined.sideA, joined.sideA), InvalidArgumentError);
+
+    // Two regions with no gateway between them are refused through the wire unless forced.
+    const auto joins = [&](RegionId a, RegionId b) {
+      return std::any_of(gateways.begin(), gateways.end(), [&](const GatewayView& g) {
+        return (g.sideA == a && g.sideB == b) || (g.sideA == b && g.sideB == a);
+      });
+    };
+    std::optional<std::pair<RegionId, RegionId>> apart;
+    for (const RegionSummaryView& a : regions)
+      for (const RegionSummaryView& b : regions)
+        if (!apart && a.id != b.id && !joins(a.id, b.id)) apart = std::pair(a.id, b.id);
+    CPPUNIT_ASSERT_MESSAGE("Intel has regions with no gateway between them", apart.has_value());
+    CPPUNIT_ASSERT_THROW(kernel.mergeRegions(apart->first, apart->second), InvalidArgumentError);
+    CPPUNIT_ASSERT_EQUAL(regions.size(), kernel.regions().size());
 
     // A 2D object named through the client library (and still named after the restart below).
     RegionView furnished;

@@ -17,6 +17,7 @@
 #include "tools/cat/IdSequenceCheck.h"
 #include "tools/cat/RecordFormat.h"
 #include "tools/common/CommandLine.h"
+#include "tools/common/StrictArguments.h"
 
 namespace po = boost::program_options;
 
@@ -88,13 +89,14 @@ int main(int argc, char** argv) {
       ("robot", po::value(&robot)->default_value(""), "robot name (default: RGNAV_ROBOT or tumbot)")
       ("consumer", po::value(&consumer)->default_value("rgnav-cat"),
        "name this reader gives the producer; a producer replaying as fast as consumed waits for it ('' for none)")
-      ("after", po::value(&options.after)->default_value(0), "start after this ID")
-      ("batch", po::value(&options.batch)->default_value(100), "records per request")
+      ("after", rgnav::strictOption(&options.after, "--after")->default_value("0"), "start after this ID")
+      ("batch", rgnav::strictOption(&options.batch, "--batch")->default_value("100"), "records per request")
       ("follow", po::bool_switch(&options.follow), "keep following after the end of data")
       ("quiet", po::bool_switch(&options.quiet), "print only the summary")
       ("record", po::value(&options.record)->default_value(""), "also write every record to this file")
-      ("poll-ms", po::value(&options.pollMs)->default_value(20), "wait between empty requests")
-      ("retry-budget-ms", po::value(&options.retryBudgetMs)->default_value(15000), "give up on a module after this");
+      ("poll-ms", rgnav::strictOption(&options.pollMs, "--poll-ms")->default_value("20"), "wait between empty requests")
+      ("retry-budget-ms", rgnav::strictOption(&options.retryBudgetMs, "--retry-budget-ms")->default_value("15000"),
+       "give up on a module after this");
   po::positional_options_description positional;
   positional.add("stream", 1);
   try {

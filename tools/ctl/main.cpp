@@ -8,6 +8,7 @@
 #include "clientlibs/watchdog/WatchdogClient.h"
 #include "watchdog/SetLoading.h"
 #include "tools/common/CommandLine.h"
+#include "tools/common/StrictArguments.h"
 
 namespace po = boost::program_options;
 
@@ -62,8 +63,8 @@ int main(int argc, char** argv) {
       ("set", po::value(&setFile)->required(), "server set file")
       ("command", po::value(&command)->required(), "what to do")
       ("module", po::value(&module)->default_value(""), "module for stop/start/restart")
-      ("timeout", po::value(&timeout)->default_value(30), "seconds, for wait-running")
-      ("after", po::value(&after)->default_value(0), "event ID, for events");
+      ("timeout", rgnav::strictOption(&timeout, "--timeout")->default_value("30"), "seconds, for wait-running")
+      ("after", rgnav::strictOption(&after, "--after")->default_value("0"), "event ID, for events");
   po::positional_options_description positional;
   positional.add("command", 1).add("module", 1);
   try {

@@ -5,11 +5,14 @@
 //       "<label>: scans=… regions=… gateways=… neutralized=… hypotheses=… scans_per_s=…"
 //       (gateways: the map's; hypotheses: detected gateways no region has taken in)
 //   rgnav-rgmap regions | gateways | events
-//   rgnav-rgmap name <region> <name> | merge <a> <b> | path <region> <x> <y> <region> <x> <y>
+//   rgnav-rgmap name <region> <name> | merge <a> <b> [--force] | path <region> <x> <y> <region> <x> <y>
 //   rgnav-rgmap name-object <region> <x> <y> <name> (x, y in the region frame) | object <name>
 //   rgnav-rgmap export <dir> <name> [--occupancy]
 // The kernel writes only below its export root (its --export-root): <dir> is relative to it ("":
 // the root) or an absolute directory inside it.
+// Region IDs and coordinates are checked (StrictArguments.h) before the kernel is asked; a merge
+// of regions that share no gateway is refused by the kernel unless --force. Names are printed
+// quoted and escaped (QuotedText.h), so no name can forge an output line.
 #include <chrono>
 #include <cstdio>
 #include <iostream>
@@ -18,6 +21,8 @@
 #include "clientlibs/rgmappingkernel/RgMappingKernelClient.h"
 #include "core/common/Errors.h"
 #include "tools/common/CommandLine.h"
+#include "tools/common/QuotedText.h"
+#include "tools/common/StrictArguments.h"
 
 namespace po = boost::program_options;
 using namespace rgnav;
@@ -54,8 +59,10 @@ int build(RgMappingKernelClient& kernel, const std::string& label, const std::st
 
 void printRegions(RgMappingKernelClient& kernel) {
   for (const RegionSummaryView& r : kernel.regions()) {
-    std::printf("region %llu%s%s frame=%.2f,%.2f,%.3f scans=%zu gateways=%zu%s\n", static_cast<unsigned long long>(r.id.value()),
-                r.name.empty() ? "" : " ", r.name.c_str(), r.frame.x, r.frame.y, r.frame.theta, r.scans,
+    std::string name;
+    if (!r.name.empty()) name.append(" ").append(quotedText(r.name));
+    std::printf("region %llu%s frame=%.2f,%.2f,%.3f scans=%zu gateways=%zu%s\n", static_cast<unsigned long long>(r.id.value()),
+                name.c_str(), r.frame.x, r.frame.y, r.frame.theta, r.scans,
                 r.gateways.size(), r.finalised ? "" : " (current)");
   }
 }
@@ -82,12 +89,18 @@ void printEvents(RgMappingKernelClient& kernel) {
   }
 }
 
+RegionId regionArgument(const std::string& text) { return RegionId(parseId(text, "region ID")); }
+
+Eigen::Vector2d pointArgument(const std::string& x, const std::string& y) {
+  return {parseFiniteNumber(x, "x"), parseFiniteNumber(y, "y")};
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
   std::string command, naming, robot, label, out, name;
   std::vector<std::string> args;
-  bool occupancy = false, quiet = false;
+  bool occupancy = false, quiet = false, force = false;
   po::options_description desc("rgnav-rgmap <build|regions|gateways|events|name|name-object|object|merge|path|export> [args] [options]");
   desc.add_options()
       ("help", "this text")
@@ -100,7 +113,8 @@ int main(int argc, char** argv) {
        "build: directory of the exported files, below the kernel's export root (default: the root)")
       ("name", po::value(&name)->default_value("map"), "build: name of the exported files")
       ("occupancy", po::bool_switch(&occupancy), "also export the global metric map (PGM + YAML)")
-      ("quiet", po::bool_switch(&quiet), "build: no progress line");
+      ("quiet", po::bool_switch(&quiet), "build: no progress line")
+      ("force", po::bool_switch(&force), "merge: also regions that share no gateway");
   po::positional_options_description positional;
   positional.add("command", 1).add("args", -1);
   try {
@@ -122,23 +136,27 @@ int main(int argc, char** argv) {
       printEvents(kernel);
     } else if (command == "name") {
       want(2);
-      kernel.nameRegion(RegionId(std::stoull(args[0])), args[1]);
+      const RegionId region = regionArgument(args[0]);
+      kernel.nameRegion(region, args[1]);
     } else if (command == "name-object") {
       want(4);
-      kernel.nameObject(RegionId(std::stoull(args[0])), {std::stod(args[1]), std::stod(args[2])}, args[3]);
+      const RegionId region = regionArgument(args[0]);
+      const Eigen::Vector2d at = pointArgument(args[1], args[2]);
+      kernel.nameObject(region, at, args[3]);
     } else if (command == "object") {
       want(1);
       const RgMappingKernel::NamedObject found = kernel.objectByName(args[0]);
-      std::printf("object %s region=%llu at=%.2f,%.2f\n", args[0].c_str(), static_cast<unsigned long long>(found.region.value()),
-                  found.namedAt.x(), found.namedAt.y());
+      std::printf("object %s region=%llu at=%.2f,%.2f\n", quotedText(args[0]).c_str(),
+                  static_cast<unsigned long long>(found.region.value()), found.namedAt.x(), found.namedAt.y());
     } else if (command == "merge") {
       want(2);
-      std::printf("merged into region %llu\n",
-                  static_cast<unsigned long long>(kernel.mergeRegions(RegionId(std::stoull(args[0])), RegionId(std::stoull(args[1]))).value()));
+      const RegionId a = regionArgument(args[0]), b = regionArgument(args[1]);
+      std::printf("merged into region %llu\n", static_cast<unsigned long long>(kernel.mergeRegions(a, b, force).value()));
     } else if (command == "path") {
       want(6);
-      const PathView path = kernel.findPath(RegionId(std::stoull(args[0])), {std::stod(args[1]), std::stod(args[2])},
-                                            RegionId(std::stoull(args[3])), {std::stod(args[4]), std::stod(args[5])});
+      const RegionId start = regionArgument(args[0]), goal = regionArgument(args[3]);
+      const Eigen::Vector2d from = pointArgument(args[1], args[2]), to = pointArgument(args[4], args[5]);
+      const PathView path = kernel.findPath(start, from, goal, to);
       for (const GraphNodeView& n : path.crossings)
         std::printf("crossing gateway=%llu side=%zu region=%llu at=%.2f,%.2f\n", static_cast<unsigned long long>(n.gateway.value()),
                     n.side, static_cast<unsigned long long>(n.region.value()), n.position.x(), n.position.y());

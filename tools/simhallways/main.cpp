@@ -16,6 +16,7 @@
 #include "core/sim/scenarios/HallwayScenarios.h"
 #include "core/sim/world/Raycaster.h"
 #include "tools/common/CommandLine.h"
+#include "tools/common/StrictArguments.h"
 
 namespace po = boost::program_options;
 namespace fs = std::filesystem;
@@ -45,8 +46,10 @@ int main(int argc, char** argv) {
   po::options_description desc("rgnav-sim-hallways [options]");
   desc.add_options()
       ("help", "this text")
-      ("seed", po::value(&seed)->default_value(seed), "seed of the clutter layouts and the laser noise")
-      ("layouts", po::value(&layouts)->default_value(layouts), "clutter layouts per environment and class")
+      ("seed", rgnav::strictOption(&seed, "--seed")->default_value(std::to_string(seed)),
+       "seed of the clutter layouts and the laser noise")
+      ("layouts", rgnav::strictOption(&layouts, "--layouts")->default_value(std::to_string(layouts)),
+       "clutter layouts per environment and class")
       ("config", po::value(&config)->default_value(""), "simulation parameters (laser) from config/sim/*.yaml")
       ("out", po::value(&outDir)->default_value("out/hallways"), "output folder");
   try {

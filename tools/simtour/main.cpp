@@ -13,6 +13,7 @@
 #include "core/sim/motion/CarmenLogWriter.h"
 #include "core/sim/LoadedWorld.h"
 #include "tools/common/CommandLine.h"
+#include "tools/common/StrictArguments.h"
 
 namespace po = boost::program_options;
 namespace fs = std::filesystem;
@@ -27,7 +28,7 @@ int main(int argc, char** argv) {
       ("help", "this text")
       ("map", po::value(&maps)->required()->multitoken(), "IPA-format floor plans (X.png or X_furnitures.png)")
       ("out", po::value(&outDir)->default_value("out/tours"), "folder for the CARMEN logs")
-      ("seed", po::value(&seed)->default_value(seed), "simulation seed");
+      ("seed", rgnav::strictOption(&seed, "--seed")->default_value(std::to_string(seed)), "simulation seed");
   po::positional_options_description positional;
   positional.add("map", -1);
   try {

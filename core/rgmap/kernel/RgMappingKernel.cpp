@@ -5,6 +5,7 @@
 #include <cmath>
 #include <limits>
 #include <map>
+#include <set>
 
 #include "core/common/Errors.h"
 #include "core/gateways/passages/PassageEndsDistance.h"
@@ -53,6 +54,12 @@ bool lastPassageInto(const RgMapState& state, GatewayId id, RegionId region) {
   });
   if (last == state.events.rend() || last->gateway != id) return false;
   return last->kind == K::GatewayRepaired || last->other == region;
+}
+
+// Whether one gateway has region `a` on one side and region `b` on the other.
+bool shareGateway(const RgMapState& state, RegionId a, RegionId b) {
+  const std::set<GatewayId>& ofB = state.regions.at(b).gateways;
+  return std::ranges::any_of(state.regions.at(a).gateways, [&](GatewayId g) { return ofB.contains(g); });
 }
 
 }  // namespace
@@ -344,9 +351,14 @@ void RgMappingKernel::revisePoses(std::span<const CorrectedPose> poses, std::uin
   if (changed) emitEvent(state_, K::PosesRevised, RegionId{}, RegionId{}, GatewayId{}, state_.lastScanId);
 }
 
-RegionId RgMappingKernel::mergeRegions(RegionId a, RegionId b) {
-  if (!state_.regions.contains(a) || !state_.regions.contains(b) || a == b)
-    throw InvalidArgumentError("cannot merge region " + std::to_string(a.value()) + " and region " + std::to_string(b.value()));
+RegionId RgMappingKernel::mergeRegions(RegionId a, RegionId b, bool force) {
+  const std::string pair = "region " + std::to_string(a.value()) + " and region " + std::to_string(b.value());
+  if (a == b) throw InvalidArgumentError("cannot merge " + pair + ": they are the same region");
+  for (const RegionId r : {a, b})
+    if (!state_.regions.contains(r))
+      throw InvalidArgumentError("cannot merge " + pair + ": no region " + std::to_string(r.value()));
+  if (!force && !shareGateway(state_, a, b))
+    throw InvalidArgumentError("cannot merge " + pair + ": they share no gateway (force the merge if they are one place)");
   const RegionId merged = rgnav::mergeRegions(state_, a, b, state_.lastScanId);
   models_.prune(state_);
   return merged;
@@ -369,6 +381,8 @@ std::optional<RegionId> RgMappingKernel::regionByName(const std::string& name) c
 }
 
 void RgMappingKernel::nameObject(RegionId region, const Eigen::Vector2d& atInRegion, const std::string& name) {
+  if (!atInRegion.allFinite())
+    throw InvalidArgumentError("an object is named at a finite point, not a NaN or infinite one");
   const auto r = state_.regions.find(region);
   if (r == state_.regions.end()) throw InvalidArgumentError("no region " + std::to_string(region.value()));
   const std::vector<Rectangle2D>& objects = description(region).objects;

@@ -143,8 +143,10 @@ class RgMappingKernel {
   void revisePoses(std::span<const CorrectedPose> poses, std::uint64_t revision);
 
   // Merges two regions on request; returns the merged region (the lower ID). Throws
-  // InvalidArgumentError for an unknown region or a == b.
-  RegionId mergeRegions(RegionId a, RegionId b);
+  // InvalidArgumentError (and changes nothing) for an unknown region, a == b, or two regions that
+  // share no gateway unless `force`: a merge is not undone, and rooms with no gateway between
+  // them (offices on opposite sides of a hallway) are rarely one room.
+  RegionId mergeRegions(RegionId a, RegionId b, bool force);
 
   // Names a region (an empty name removes the name). Throws InvalidArgumentError for an unknown
   // region or a name another region has.
@@ -152,7 +154,8 @@ class RgMappingKernel {
   std::optional<RegionId> regionByName(const std::string& name) const;
   // Names the object of region `region` at `atInRegion` (region frame; ObjectNames.h says which
   // object that is), replacing a name it had; an empty name removes its name. Throws
-  // InvalidArgumentError for an unknown region, no object there, or a name another object has.
+  // InvalidArgumentError for a non-finite point, an unknown region, no object there, or a name
+  // another object has.
   void nameObject(RegionId region, const Eigen::Vector2d& atInRegion, const std::string& name);
   // The region holding the object named `name` and the object's centre in the map frame when it
   // was named.

@@ -14,6 +14,7 @@
 #include <algorithm>
 #include <cmath>
 #include <functional>
+#include <limits>
 
 #include "core/common/Errors.h"
 #include "core/lines/ScanPoints.h"
@@ -125,6 +126,7 @@ class RgMappingKernelTest : public CppUnit::TestFixture {
   CPPUNIT_TEST(regionsAreNamedAndFoundByName);
   CPPUNIT_TEST(objectsAreNamedAndFoundByName);
   CPPUNIT_TEST(regionsAreMergedOnRequest);
+  CPPUNIT_TEST(regionsJoinedByAGatewayMergeWithoutForce);
   CPPUNIT_TEST(pathLeadsThroughBothDoors);
   CPPUNIT_TEST(learnedCostsAreKept);
   CPPUNIT_TEST(revisedPosesMoveTheDescription);
@@ -526,13 +528,16 @@ class RgMappingKernelTest : public CppUnit::TestFixture {
     CPPUNIT_ASSERT(!k.objectByName("desk"));
     CPPUNIT_ASSERT_THROW(k.nameObject(kRoom1, {cabinet.x + 2.0, cabinet.y}, "desk"), InvalidArgumentError);
     CPPUNIT_ASSERT_THROW(k.nameObject(RegionId{99}, {0.0, 0.0}, "desk"), InvalidArgumentError);
+    for (const double bad : {std::nan(""), std::numeric_limits<double>::infinity()})
+      CPPUNIT_ASSERT_THROW(k.nameObject(kRoom1, {bad, cabinet.y}, "desk"), InvalidArgumentError);
+    CPPUNIT_ASSERT(!k.objectByName("desk"));
     k.nameObject(kRoom1, {cabinet.x, cabinet.y}, "cabinet");  // renames it
     CPPUNIT_ASSERT(!k.objectByName("files"));
     CPPUNIT_ASSERT_EQUAL(std::string("cabinet"), regionView(k, kRoom1).objects[0].name);
     CPPUNIT_ASSERT(k.checkConsistency().empty());
 
     // The name survives a merge of its region and a checkpoint round trip.
-    k.mergeRegions(kHallway, kRoom1);
+    k.mergeRegions(kHallway, kRoom1, false);
     CPPUNIT_ASSERT_EQUAL(kHallway, k.objectByName("cabinet")->region);
     const RgMappingKernel resumed({}, deserializeRgMap(serializeRgMap(k.state()), scanJournalLines(k.state())));
     CPPUNIT_ASSERT(resumed.objectByName("cabinet"));
@@ -541,11 +546,17 @@ class RgMappingKernelTest : public CppUnit::TestFixture {
     CPPUNIT_ASSERT(!k.objectByName("cabinet"));
   }
 
+  // The two rooms lie on opposite sides of the hallway: no gateway joins them, so a merge asked
+  // without force is refused and changes nothing; forced, it merges them.
   void regionsAreMergedOnRequest() {
     RgMappingKernel k = mappedFloor();
     k.nameRegion(kRoom2, "lab");
     const std::size_t scans = k.state().regions.at(kRoom1).scans.size() + k.state().regions.at(kRoom2).scans.size();
-    CPPUNIT_ASSERT_EQUAL(kRoom1, k.mergeRegions(kRoom2, kRoom1));
+    const std::size_t events = k.state().events.size();
+    CPPUNIT_ASSERT_THROW_MESSAGE("no shared gateway", k.mergeRegions(kRoom2, kRoom1, false), InvalidArgumentError);
+    CPPUNIT_ASSERT_EQUAL(std::size_t(3), k.state().regions.size());
+    CPPUNIT_ASSERT_EQUAL(events, k.state().events.size());
+    CPPUNIT_ASSERT_EQUAL(kRoom1, k.mergeRegions(kRoom2, kRoom1, true));
     const RgMapState& s = k.state();
     CPPUNIT_ASSERT_EQUAL(std::size_t(2), s.regions.size());
     CPPUNIT_ASSERT_EQUAL(scans, s.regions.at(kRoom1).scans.size());
@@ -556,8 +567,23 @@ class RgMappingKernelTest : public CppUnit::TestFixture {
     CPPUNIT_ASSERT(merged.kind == RgMapEventKind::RegionsMerged && merged.region == kRoom1 && merged.other == kRoom2);
     CPPUNIT_ASSERT(k.checkConsistency().empty());
     CPPUNIT_ASSERT_EQUAL(scans, k.description(kRoom1).scanCount);
-    CPPUNIT_ASSERT_THROW(k.mergeRegions(kRoom1, kRoom1), InvalidArgumentError);
-    CPPUNIT_ASSERT_THROW(k.mergeRegions(kRoom1, kRoom2), InvalidArgumentError);
+    CPPUNIT_ASSERT_THROW(k.mergeRegions(kRoom1, kRoom1, true), InvalidArgumentError);
+    CPPUNIT_ASSERT_THROW(k.mergeRegions(kRoom1, kRoom2, true), InvalidArgumentError);
+  }
+
+  // Regions joined by a gateway merge without force (the same room seen twice), and the refusal
+  // of regions that share none says why.
+  void regionsJoinedByAGatewayMergeWithoutForce() {
+    RgMappingKernel k = mappedFloor();
+    try {
+      k.mergeRegions(kRoom1, kRoom2, false);
+      CPPUNIT_FAIL("regions with no gateway between them were merged");
+    } catch (const InvalidArgumentError& e) {
+      CPPUNIT_ASSERT(std::string(e.what()).find("share no gateway") != std::string::npos);
+    }
+    CPPUNIT_ASSERT_EQUAL(kHallway, k.mergeRegions(kRoom2, kHallway, false));
+    CPPUNIT_ASSERT_EQUAL(std::size_t(2), k.state().regions.size());
+    CPPUNIT_ASSERT(k.checkConsistency().empty());
   }
 
   void pathLeadsThroughBothDoors() {
