@@ -2,12 +2,19 @@
 #include "tools/rgmap/LogCompleteness.h"
 
 #include "clientlibs/laser/LaserClient.h"
+#include "core/common/Errors.h"
 
 namespace rgnav {
 
 LogCompleteness laserLogCompleteness(ClientSettings settings) {
   settings.retryBudget = std::chrono::seconds(5);
-  const ModuleStatusInfo status = LaserClient(settings).status();
+  ModuleStatusInfo status;
+  try {
+    status = LaserClient(settings).status();
+  } catch (const std::exception& e) {
+    throw Error(std::string("cannot tell whether the map is of the whole log: no status from the Laser module: ") +
+                e.what());
+  }
   const auto skipped = status.counters.find("log_skipped_lines");
   const auto truncated = status.counters.find("log_truncated");
   LogCompleteness verdict;

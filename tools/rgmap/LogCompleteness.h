@@ -17,7 +17,8 @@ struct LogCompleteness {
   std::string problem;   // the Laser's last error when not whole ("file:line: what")
 };
 
-// Asks the Laser module of the set `settings` names. Throws what the client throws if it cannot.
+// Asks the Laser module of the set `settings` names. Throws Error naming the Laser
+// module and the cause if it cannot.
 LogCompleteness laserLogCompleteness(ClientSettings settings);
 
 }  // namespace rgnav
