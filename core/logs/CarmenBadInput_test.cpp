@@ -1,6 +1,7 @@
 // Tests CarmenLogReader on bad input written to temporary files: garbled lines among good ones,
 // odd range values, absurd beam counts, random bytes, a 10 MB line, truncated compressed logs and
-// paths that cannot be opened. Each case must end in a typed error or a counted skip.
+// paths that cannot be opened. Each case must end in a typed error or a counted skip, and the
+// skips and an early end are described by kind with the first file:line of each.
 #include <cppunit/extensions/HelperMacros.h>
 
 #include <cmath>
@@ -57,16 +58,24 @@ bool startsWith(const std::string& text, const std::string& prefix) {
   return text.compare(0, prefix.size(), prefix) == 0;
 }
 
-// Reads a damaged compressed log: records come until a FormatError naming the file.
+// Reads a damaged compressed log: records come until a FormatError naming the file, which the
+// statistics keep as the truncation, reported for people.
 void assertTruncatedLogFails(const std::string& path) {
   CarmenLogReader reader(path);
   try {
     while (reader.next()) {
     }
   } catch (const rgnav::FormatError& e) {
+    const rgnav::LogStats& stats = reader.stats();
     CPPUNIT_ASSERT_EQUAL(path, e.file());
-    CPPUNIT_ASSERT_EQUAL(reader.stats().lines + 1, e.line());
-    CPPUNIT_ASSERT(reader.stats().scans > 10);
+    CPPUNIT_ASSERT_EQUAL(stats.lines + 1, e.line());
+    CPPUNIT_ASSERT(stats.scans > 10);
+    CPPUNIT_ASSERT(stats.truncated && !stats.wholeLog());
+    CPPUNIT_ASSERT_EQUAL(std::string(e.what()), stats.truncation);
+    CPPUNIT_ASSERT_EQUAL(std::string("skipped_lines=0 truncated=yes"), rgnav::skipFigures(stats));
+    const std::vector<std::string> described = rgnav::describeSkips(stats);
+    CPPUNIT_ASSERT_EQUAL(std::size_t{1}, described.size());
+    CPPUNIT_ASSERT_EQUAL("the log ends early, the rest is lost: " + std::string(e.what()), described[0]);
     return;
   }
   CPPUNIT_FAIL("no FormatError for " + path);
@@ -84,6 +93,9 @@ class CarmenBadInputTest : public CppUnit::TestFixture {
   CPPUNIT_TEST(tenMegabyteLineIsCountedAsOverLong);
   CPPUNIT_TEST(truncatedGzipLogThrowsAfterGoodRecords);
   CPPUNIT_TEST(truncatedXzLogThrowsAfterGoodRecords);
+  CPPUNIT_TEST(skipsAreDescribedByKindWithTheirFirstLine);
+  CPPUNIT_TEST(wholeLogHasNothingToDescribe);
+  CPPUNIT_TEST(cutAndGarbledRealLogIsReported);
   CPPUNIT_TEST(missingFileAndDirectoryFailAtOpen);
   CPPUNIT_TEST(badOptionsAreRejected);
   CPPUNIT_TEST_SUITE_END();
@@ -190,6 +202,69 @@ class CarmenBadInputTest : public CppUnit::TestFixture {
     const std::string xz = rgnav::testing::xzCompress(generatedLog(2000));
     rgnav::testing::writeFile(dir.file("cut.log.xz"), xz.substr(0, xz.size() / 2));
     assertTruncatedLogFails(dir.file("cut.log.xz"));
+  }
+
+  void skipsAreDescribedByKindWithTheirFirstLine() {
+    TempDir dir;
+    rgnav::LogReaderOptions options;
+    options.maxLineLength = 200;
+    const LogContents log = readText(dir,
+                                     kOdom + flaser(3, "1 x 3") + flaser(3, "1 2 3" + std::string(300, ' ')) +
+                                         flaser(3, "1 2 3") + "ODOM 1\n",
+                                     options);
+    const std::string path = dir.file("test.log");
+    CPPUNIT_ASSERT_EQUAL(std::size_t{3}, log.stats.skippedLines());
+    CPPUNIT_ASSERT(!log.stats.wholeLog());
+    CPPUNIT_ASSERT_EQUAL(std::string("skipped_lines=3 truncated=no"), rgnav::skipFigures(log.stats));
+    const std::vector<std::string> described = rgnav::describeSkips(log.stats);
+    CPPUNIT_ASSERT_EQUAL(std::size_t{2}, described.size());
+    CPPUNIT_ASSERT_MESSAGE(described[0],
+                           startsWith(described[0], "2 malformed lines skipped, the first " + path + ":2: FLASER: "));
+    CPPUNIT_ASSERT_EQUAL("1 over-long lines skipped, the first " + path + ":3: line longer than 200 bytes, skipped",
+                         described[1]);
+  }
+
+  void wholeLogHasNothingToDescribe() {
+    TempDir dir;
+    const LogContents log = readText(dir, kOdom + flaser(3, "1 2 3") + "FOO 1\n");
+    CPPUNIT_ASSERT(log.stats.wholeLog());
+    CPPUNIT_ASSERT(rgnav::describeSkips(log.stats).empty());
+    CPPUNIT_ASSERT_EQUAL(std::string("skipped_lines=0 truncated=no"), rgnav::skipFigures(log.stats));
+  }
+
+  // The first 3000 lines of the Intel log, every other FLASER line cut in half, gzipped and the
+  // compressed stream cut at two thirds: the skips and the early end are both reported.
+  void cutAndGarbledRealLogIsReported() {
+    TempDir dir;
+    rgnav::LineReader lines(rgnav::testing::sharedData("laser/corrected/intel-corrected.log.gz"));
+    std::string text;
+    std::size_t garbled = 0, flasers = 0;
+    for (int i = 0; i < 3000; ++i) {
+      const std::string line(lines.next().value().text);
+      const bool garble = startsWith(line, "FLASER ") && flasers++ % 2 == 0;
+      garbled += garble ? 1 : 0;
+      text += (garble ? line.substr(0, line.size() / 2) : line) + "\n";
+    }
+    const std::string gz = rgnav::testing::gzipCompress(text);
+    const std::string path = dir.file("intel-start.log.gz");
+    rgnav::testing::writeFile(path, gz.substr(0, gz.size() * 2 / 3));
+    CarmenLogReader reader(path);
+    const auto readToEnd = [&reader] {
+      while (reader.next()) {
+      }
+    };
+    CPPUNIT_ASSERT_THROW(readToEnd(), rgnav::FormatError);
+    const rgnav::LogStats& stats = reader.stats();
+    CPPUNIT_ASSERT(garbled > 50);
+    CPPUNIT_ASSERT(stats.malformedLines > garbled / 2 && stats.malformedLines <= garbled);
+    CPPUNIT_ASSERT(stats.truncated);
+    CPPUNIT_ASSERT(startsWith(stats.truncation, path + ":"));
+    const std::vector<std::string> described = rgnav::describeSkips(stats);
+    CPPUNIT_ASSERT_EQUAL(std::size_t{2}, described.size());
+    CPPUNIT_ASSERT(startsWith(described[0], std::to_string(stats.malformedLines) + " malformed lines skipped, the first " +
+                                                path + ":"));
+    CPPUNIT_ASSERT_EQUAL("skipped_lines=" + std::to_string(stats.malformedLines) + " truncated=yes",
+                         rgnav::skipFigures(stats));
   }
 
   void missingFileAndDirectoryFailAtOpen() {

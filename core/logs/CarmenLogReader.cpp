@@ -1,6 +1,8 @@
 // CarmenLogReader: line loop, ID numbering and statistics around CarmenLineParser.
 #include "core/logs/CarmenLogReader.h"
 
+#include "core/common/Errors.h"
+
 namespace rgnav {
 
 namespace {
@@ -16,8 +18,17 @@ const LogReaderOptions& checked(const LogReaderOptions& options) {
 CarmenLogReader::CarmenLogReader(const std::string& path, const LogReaderOptions& options)
     : lines_(path, checked(options).maxLineLength), parser_(options.maxRange) {}
 
+std::optional<LineReader::Line> CarmenLogReader::nextLine() {
+  try {
+    return lines_.next();
+  } catch (const FormatError& e) {
+    stats_.addTruncation(e.what());
+    throw;
+  }
+}
+
 std::optional<LogRecord> CarmenLogReader::next() {
-  while (const auto line = lines_.next()) {
+  while (const auto line = nextLine()) {
     ++stats_.lines;
     if (line->overLong) {
       stats_.addOverLong(lines_.path(), line->number, lines_.maxLineLength());

@@ -37,6 +37,8 @@ void PlaybackStreams::report(ModuleHealth& health) const {
   health.set("log_odometry", stats.odometryReadings);
   health.set("log_malformed_lines", stats.malformedLines);
   health.set("log_overlong_lines", stats.overLongLines);
+  health.set("log_skipped_lines", stats.skippedLines());
+  health.set("log_truncated", stats.truncated ? 1 : 0);
   health.set("ranges_dropped", stats.droppedRanges);
   health.set("ranges_no_return", stats.noReturnRanges);
   if (const std::string error = playback_.readError(); !error.empty())

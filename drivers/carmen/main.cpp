@@ -1,9 +1,12 @@
 // rgnav-carmen-playback: serves a recorded log (CARMEN plain/.gz/.xz, or the Intel JSON pair)
-// as the Laser and Base modules, at real time, k times real time, or as fast as consumed.
+// as the Laser and Base modules, at real time, k times real time, or as fast as consumed. At the
+// end of the log it writes what it read and skipped to its log (LogEndReport) and its status
+// counters say it too (log_skipped_lines, log_truncated).
 #include <iostream>
 
 #include "core/logs/OpenLog.h"
 #include "core/logs/ReplayMode.h"
+#include "drivers/carmen/LogEndReport.h"
 #include "drivers/carmen/PlaybackStreams.h"
 #include "servers/sensors/SensorServants.h"
 
@@ -30,7 +33,7 @@ int main(int argc, char** argv) {
     reader.correctedPosesPath = corrected;
     const rgnav::ReplayMode mode = rgnav::parseReplayMode(speed);
     auto streams = std::make_shared<rgnav::PlaybackStreams>(
-        rgnav::openLog(log, reader), mode, buffer,
+        std::make_unique<rgnav::LogEndReport>(rgnav::openLog(log, reader), log, std::cerr), mode, buffer,
         rgnav::PlaybackClock(runtime.server().stateDir, log, rgnav::formatReplayMode(mode)));
     runtime.onShutdown([streams] { streams->clock().discard(); });
     runtime.health().addReporter([streams](rgnav::ModuleHealth& health) { streams->report(health); });

@@ -1,7 +1,8 @@
 // integration_bad_logs_test: the playback server under the real watchdog on logs it cannot use.
 // A missing file or a directory is a crash at start: after max_restarts the module is FATAL
 // and its log names the problem. Binary garbage, a truncated .gz and a log with garbled lines
-// are served as far as they can be read, with the problem in the module's status, and the
+// are served as far as they can be read, with the problem in the module's status (skipped lines
+// and truncation counted), a summary with the first file:line of each kind in its log, and the
 // server never crashes (the watchdog counts no restart).
 #include <cppunit/extensions/HelperMacros.h>
 
@@ -89,6 +90,10 @@ class BadLogsIntegrationTest : public CppUnit::TestFixture {
     const ModuleStatusInfo status = laser.status();
     CPPUNIT_ASSERT_MESSAGE("lastError: " + status.lastError,
                            status.lastError.find("truncated.log.gz") != std::string::npos);
+    CPPUNIT_ASSERT_EQUAL(std::uint64_t{1}, status.counters.at("log_truncated"));
+    CPPUNIT_ASSERT_EQUAL(std::uint64_t{0}, status.counters.at("log_skipped_lines"));
+    expectInModuleLog(cluster, "skipped_lines=0 truncated=yes");
+    expectInModuleLog(cluster, "playback: the log ends early, the rest is lost: " + scratch.file("truncated.log.gz") + ":");
     expectNeverRestarted(cluster);
   }
 
@@ -121,10 +126,20 @@ class BadLogsIntegrationTest : public CppUnit::TestFixture {
     CPPUNIT_ASSERT_EQUAL(std::uint64_t{inserted}, status.counters.at("log_malformed_lines"));
     CPPUNIT_ASSERT_MESSAGE("lastError: " + status.lastError,
                            status.lastError.find("garbled.log:") != std::string::npos);
+    CPPUNIT_ASSERT_EQUAL(std::uint64_t{inserted}, status.counters.at("log_skipped_lines"));
+    CPPUNIT_ASSERT_EQUAL(std::uint64_t{0}, status.counters.at("log_truncated"));
+    expectInModuleLog(cluster, "skipped_lines=" + std::to_string(inserted) + " truncated=no");
+    expectInModuleLog(cluster, "playback: " + std::to_string(inserted) + " malformed lines skipped, the first " +
+                                   scratch.file("garbled.log") + ":26: FLASER");
     expectNeverRestarted(cluster);
   }
 
  private:
+  static void expectInModuleLog(TestCluster& cluster, const std::string& text) {
+    const std::string moduleLog = readFile(cluster.dir() + "/run/logs/BadLog.log");
+    CPPUNIT_ASSERT_MESSAGE("module log: " + moduleLog + "\nlacks: " + text, moduleLog.find(text) != std::string::npos);
+  }
+
   // The module crashes at every start: FATAL after max_restarts, with `reason` in its log.
   static void expectFatalAtStart(const std::string& log, const std::string& reason) {
     TestCluster cluster({badLogModule(log)}, kFastBackoff);

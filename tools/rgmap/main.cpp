@@ -3,7 +3,9 @@
 //       follows the map while it is built (a progress line on stderr), waits for the end of the
 //       inputs, exports <dir>/<name>.rgmap.json/.svg/.png and prints
 //       "<label>: scans=… regions=… gateways=… neutralized=… hypotheses=… scans_per_s=…"
-//       (gateways: the map's; hypotheses: detected gateways no region has taken in)
+//       (gateways: the map's; hypotheses: detected gateways no region has taken in), for a log
+//       playback with " skipped_lines=… truncated=yes|no"; exit 3 if the map is not of the whole
+//       log (lines skipped or the log cut short) unless --accept-partial
 //   rgnav-rgmap regions | gateways | events
 //   rgnav-rgmap name <region> <name> | merge <a> <b> [--force] | path <region> <x> <y> <region> <x> <y>
 //   rgnav-rgmap name-object <region> <x> <y> <name> (x, y in the region frame) | object <name>
@@ -23,6 +25,7 @@
 #include "tools/common/CommandLine.h"
 #include "tools/common/QuotedText.h"
 #include "tools/common/StrictArguments.h"
+#include "tools/rgmap/LogCompleteness.h"
 
 namespace po = boost::program_options;
 using namespace rgnav;
@@ -33,8 +36,11 @@ double secondsSince(std::chrono::steady_clock::time_point start) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
-int build(RgMappingKernelClient& kernel, const std::string& label, const std::string& out, const std::string& name,
-          bool occupancy, bool progress) {
+// Exit code of a build whose map is not of the whole log.
+constexpr int kPartialMap = 3;
+
+int build(RgMappingKernelClient& kernel, const ClientSettings& settings, const std::string& label, const std::string& out,
+          const std::string& name, bool occupancy, bool progress, bool acceptPartial) {
   const auto start = std::chrono::steady_clock::now();
   MapSummaryView s = kernel.summary();
   const DataId first = s.lastScan;
@@ -51,10 +57,16 @@ int build(RgMappingKernelClient& kernel, const std::string& label, const std::st
   const double seconds = secondsSince(start);
   if (progress) std::fprintf(stderr, "\n");
   std::cout << kernel.exportMap(out, name, occupancy);
-  std::printf("%s: scans=%llu regions=%zu gateways=%zu neutralized=%zu hypotheses=%zu scans_per_s=%.1f\n", label.c_str(),
-              static_cast<unsigned long long>(s.lastScan), s.regions, s.gateways, s.neutralised, s.hypotheses,
-              double(s.lastScan - first) / std::max(seconds, 1e-3));
-  return 0;
+  const LogCompleteness input = laserLogCompleteness(settings);
+  std::printf("%s: scans=%llu regions=%zu gateways=%zu neutralized=%zu hypotheses=%zu scans_per_s=%.1f%s%s\n",
+              label.c_str(), static_cast<unsigned long long>(s.lastScan), s.regions, s.gateways, s.neutralised,
+              s.hypotheses, double(s.lastScan - first) / std::max(seconds, 1e-3), input.fromLog ? " " : "",
+              input.figures.c_str());
+  if (input.whole) return 0;
+  std::fflush(stdout);
+  std::fprintf(stderr, "rgnav-rgmap: the map is not of the whole log (%s; %s)%s\n", input.figures.c_str(),
+               input.problem.c_str(), acceptPartial ? ", accepted (--accept-partial)" : "; --accept-partial accepts it");
+  return acceptPartial ? 0 : kPartialMap;
 }
 
 void printRegions(RgMappingKernelClient& kernel) {
@@ -100,7 +112,7 @@ Eigen::Vector2d pointArgument(const std::string& x, const std::string& y) {
 int main(int argc, char** argv) {
   std::string command, naming, robot, label, out, name;
   std::vector<std::string> args;
-  bool occupancy = false, quiet = false, force = false;
+  bool occupancy = false, quiet = false, force = false, acceptPartial = false;
   po::options_description desc("rgnav-rgmap <build|regions|gateways|events|name|name-object|object|merge|path|export> [args] [options]");
   desc.add_options()
       ("help", "this text")
@@ -114,7 +126,8 @@ int main(int argc, char** argv) {
       ("name", po::value(&name)->default_value("map"), "build: name of the exported files")
       ("occupancy", po::bool_switch(&occupancy), "also export the global metric map (PGM + YAML)")
       ("quiet", po::bool_switch(&quiet), "build: no progress line")
-      ("force", po::bool_switch(&force), "merge: also regions that share no gateway");
+      ("force", po::bool_switch(&force), "merge: also regions that share no gateway")
+      ("accept-partial", po::bool_switch(&acceptPartial), "build: exit 0 although the log playback skipped lines or the log ended early");
   po::positional_options_description positional;
   positional.add("command", 1).add("args", -1);
   try {
@@ -127,7 +140,7 @@ int main(int argc, char** argv) {
     const auto want = [&](std::size_t n) {
       if (args.size() != n) throw InvalidArgumentError(command + " wants " + std::to_string(n) + " arguments");
     };
-    if (command == "build") return build(kernel, label, out, name, occupancy, !quiet);
+    if (command == "build") return build(kernel, settings, label, out, name, occupancy, !quiet, acceptPartial);
     if (command == "regions") {
       printRegions(kernel);
     } else if (command == "gateways") {
