@@ -2,7 +2,9 @@
 #include "watchdog/ProcStat.h"
 
 #include <signal.h>
+#include <unistd.h>
 
+#include <algorithm>
 #include <cerrno>
 #include <fstream>
 #include <iterator>
@@ -24,9 +26,9 @@ std::optional<ProcStat> readProcStat(pid_t pid) {
   if (close == std::string::npos) throw ProcessError(path + ": no ')' after the command name");
   std::istringstream fields(text.substr(close + 1));
   ProcStat stat{};
-  fields >> stat.state;
   std::string skipped;
-  for (int field = 4; field < 22; ++field) fields >> skipped;
+  fields >> stat.state >> skipped >> stat.group;
+  for (int field = 6; field < 22; ++field) fields >> skipped;
   fields >> stat.startTime;
   if (!fields) throw ProcessError(path + ": too few fields");
   return stat;
@@ -37,6 +39,27 @@ bool isProcessAlive(pid_t pid, std::uint64_t startTime) {
   if (kill(pid, 0) != 0 && errno != EPERM) return false;
   const std::optional<ProcStat> stat = readProcStat(pid);
   return stat && stat->state != 'Z' && stat->state != 'X' && stat->startTime == startTime;
+}
+
+std::chrono::nanoseconds processAge(std::uint64_t startTime) {
+  double uptime = 0;
+  std::ifstream("/proc/uptime") >> uptime;
+  const double started = static_cast<double>(startTime) / static_cast<double>(sysconf(_SC_CLK_TCK));
+  return std::chrono::duration_cast<std::chrono::nanoseconds>(
+      std::chrono::duration<double>(std::max(0.0, uptime - started)));
+}
+
+std::string describeProcessState(char state) {
+  switch (state) {
+    case 'R': return "running";
+    case 'S': return "sleeping";
+    case 'D': return "in uninterruptible sleep";
+    case 'T': return "stopped (SIGSTOP or SIGTSTP)";
+    case 't': return "stopped by a debugger";
+    case 'Z': return "a zombie";
+    case 'X': return "dead";
+    default: return std::string("in state ") + state;
+  }
 }
 
 }  // namespace rgnav
