@@ -1,0 +1,106 @@
+# Supervision as an operator meets it: a set of its own (omniNames and a simulator on free ports,
+# run dir in $WORK). Status of a set that is not up; a second set on the same ports (port clash);
+# a SIGSTOPped watchdog; a SIGKILLed watchdog whose modules keep running (status and down find
+# them from the state file); and `up` after the run dir was deleted while those modules still hold
+# the ports. Every refusal must name its cause within 2 s. Every process started here is ended by
+# its PID at the end, also when the scenario fails half-way.
+
+STARTED_PIDS=()
+cleanup_supervision() {
+  local pid
+  for pid in "${STARTED_PIDS[@]}"; do kill -CONT "$pid" 2>/dev/null; kill -KILL "$pid" 2>/dev/null; done
+  return 0
+}
+trap cleanup_supervision EXIT
+
+# Three free loopback ports: naming service, watchdog, simulator.
+read -r NAMING_PORT WATCHDOG_PORT SIM_PORT < <(python3 -c '
+import socket
+socks = [socket.socket() for _ in range(3)]
+for s in socks: s.bind(("127.0.0.1", 0))
+print(*[s.getsockname()[1] for s in socks])')
+
+# write_set FILE RUN_DIR: a set on the ports above.
+write_set() {
+  cat >"$1" <<EOF
+robot: tumbot
+host: 127.0.0.1
+run_dir: $2
+naming: {host: 127.0.0.1, port: $NAMING_PORT, managed: true}
+watchdog: {port: $WATCHDOG_PORT}
+modules:
+  - name: Simulator
+    command: ["\${RGNAV_BIN}/rgnav-sim", "--world", "\${RGNAV_ROOT}/config/worlds/office.yaml",
+              "--config", "\${RGNAV_ROOT}/config/sim/default.yaml", "--start", "1.5,7,0"]
+    port: $SIM_PORT
+    objects: [Laser, Base, GroundTruth]
+EOF
+}
+SET_A="$WORK/sets/opa.yaml" SET_B="$WORK/sets/opb.yaml"
+mkdir -p "$WORK/sets"
+write_set "$SET_A" "$WORK/run-a"
+write_set "$SET_B" "$WORK/run-b"
+
+# The PIDs in the PID column of a status table (modules, leftovers).
+remember_table_pids() {
+  local pid
+  for pid in $(awk 'NR > 1 && $3 ~ /^[0-9]+$/ && $3 > 0 { print $3 }' <<<"$RUN_OUT"); do STARTED_PIDS+=("$pid"); done
+}
+# The watchdog PID `rgctl up` reports.
+remember_watchdog_pid() {
+  WATCHDOG_PID=$(grep -oE 'watchdog pid [0-9]+' <<<"$RUN_OUT" | grep -oE '[0-9]+' | head -n 1)
+  [[ -n $WATCHDOG_PID ]] && STARTED_PIDS+=("$WATCHDOG_PID")
+}
+wait_gone() { local i; for i in $(seq 1 100); do kill -0 "$1" 2>/dev/null || return 0; sleep 0.05; done; }
+
+# Nothing runs yet: said at once, with the address tried.
+run "$RGCTL" status "$SET_A"
+expect_refusal "set 'opa' is not up \(no watchdog at 127\.0\.0\.1:$WATCHDOG_PORT\)"
+
+run "$RGCTL" up "$SET_A"
+remember_watchdog_pid
+expect_ok
+run "$RGCTL" status "$SET_A"
+remember_table_pids
+expect_output "Simulator +RUNNING"
+
+# A second set on the same ports: refused before it starts, naming the port and who holds it;
+# its status and wait-running name the clash instead of showing the other set's modules.
+run "$RGCTL" up "$SET_B"
+expect_refusal "port $WATCHDOG_PORT \(its watchdog\) is held by pid $WATCHDOG_PID"
+run "$RGCTL" status "$SET_B"
+expect_refusal "port $WATCHDOG_PORT .* is held by pid $WATCHDOG_PID .*not by this set's watchdog"
+run "$BIN/rgnav-ctl" --set "$SET_B" wait-running --timeout 5
+expect_refusal "held by pid $WATCHDOG_PID"
+
+# A stopped watchdog: said at once, with its PID, its state and what to do.
+kill -STOP "$WATCHDOG_PID"
+run "$RGCTL" status "$SET_A"
+expect_refusal "pid $WATCHDOG_PID .*does not answer: it is stopped.*kill -CONT $WATCHDOG_PID"
+run "$RGCTL" down "$SET_A"
+expect_refusal "pid $WATCHDOG_PID .*does not answer: it is stopped.*kill -CONT $WATCHDOG_PID"
+kill -CONT "$WATCHDOG_PID"
+
+# A killed watchdog: its modules keep running; status and down find them from the state file.
+kill -KILL "$WATCHDOG_PID"
+wait_gone "$WATCHDOG_PID"
+run "$RGCTL" status "$SET_A"
+remember_table_pids
+expect_refusal "set 'opa' is not up .*2 of its modules still run"
+run "$RGCTL" down "$SET_A"
+expect_output "stopping the 2 modules it left running.*NameService \(pid [0-9]+\).*Simulator \(pid [0-9]+\)"
+run "$RGCTL" status "$SET_A"
+expect_refusal "set 'opa' is not up \(no watchdog at 127\.0\.0\.1:$WATCHDOG_PORT\)$"
+
+# Killed again, and the run dir deleted: the leftovers still hold the ports; up names them.
+run "$RGCTL" up "$SET_A"
+remember_watchdog_pid
+expect_ok
+run "$RGCTL" status "$SET_A"
+remember_table_pids
+SIM_PID=$(awk '$1 == "Simulator" { print $3 }' <<<"$RUN_OUT")
+kill -KILL "$WATCHDOG_PID"
+wait_gone "$WATCHDOG_PID"
+rm -rf -- "$WORK/run-a"
+run "$RGCTL" up "$SET_A"
+expect_refusal "port $SIM_PORT \(its Simulator\) is held by pid $SIM_PID"
