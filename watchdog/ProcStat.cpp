@@ -1,13 +1,13 @@
 // /proc/<pid>/stat parsing and the liveness test for adopted processes.
 #include "watchdog/ProcStat.h"
 
+#include <fcntl.h>
 #include <signal.h>
 #include <unistd.h>
 
 #include <algorithm>
 #include <cerrno>
 #include <fstream>
-#include <iterator>
 #include <sstream>
 #include <string>
 
@@ -15,12 +15,26 @@
 
 namespace rgnav {
 
+std::string readProcFile(pid_t pid, const std::string& name) {
+  const int fd = ::open(("/proc/" + std::to_string(pid) + "/" + name).c_str(), O_RDONLY | O_CLOEXEC);
+  if (fd < 0) return {};
+  std::string text;
+  char buffer[4096];
+  for (;;) {
+    const ssize_t n = ::read(fd, buffer, sizeof buffer);
+    if (n < 0 && errno == EINTR) continue;
+    if (n < 0) text.clear();  // gone while we read
+    if (n <= 0) break;
+    text.append(buffer, static_cast<std::size_t>(n));
+  }
+  ::close(fd);
+  return text;
+}
+
 std::optional<ProcStat> readProcStat(pid_t pid) {
   const std::string path = "/proc/" + std::to_string(pid) + "/stat";
-  std::ifstream in(path);
-  if (!in) return std::nullopt;
-  const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-  if (text.empty()) return std::nullopt;  // the process went away while we read
+  const std::string text = readProcFile(pid, "stat");
+  if (text.empty()) return std::nullopt;  // no such process, or it went away while we read
   // Field 2 is "(comm)" and comm may contain spaces and ')': fields 3.. follow the last ')'.
   const std::size_t close = text.rfind(')');
   if (close == std::string::npos) throw ProcessError(path + ": no ')' after the command name");

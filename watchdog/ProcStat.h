@@ -17,6 +17,10 @@ struct ProcStat {
   std::uint64_t startTime;  // field 22: clock ticks after boot
 };
 
+// The whole content of a file of /proc/<pid>/; empty if the process is gone (also when it
+// vanishes while the file is read: the read then fails with ESRCH).
+std::string readProcFile(pid_t pid, const std::string& name);
+
 // nullopt if there is no such process. Throws ProcessError if the file cannot be parsed.
 std::optional<ProcStat> readProcStat(pid_t pid);
 
