@@ -2,7 +2,9 @@
 # run dir in $WORK). Status of a set that is not up; a second set on the same ports (port clash);
 # a SIGSTOPped watchdog; a SIGKILLed watchdog whose modules keep running (status and down find
 # them from the state file); and `up` after the run dir was deleted while those modules still hold
-# the ports. Every refusal must name its cause within 2 s. Every process started here is ended by
+# the ports; a new watchdog adopting the modules of a killed one (their real uptime); a module
+# whose program does not exist (the cause, not an exit code). Every refusal must name its cause
+# within 2 s. Every process started here is ended by
 # its PID at the end, also when the scenario fails half-way.
 
 STARTED_PIDS=()
@@ -13,10 +15,11 @@ cleanup_supervision() {
 }
 trap cleanup_supervision EXIT
 
-# Three free loopback ports: naming service, watchdog, simulator.
-read -r NAMING_PORT WATCHDOG_PORT SIM_PORT < <(python3 -c '
+# Free loopback ports: naming service, watchdog, simulator; and the naming service, watchdog and
+# module of a set whose module cannot be spawned.
+read -r NAMING_PORT WATCHDOG_PORT SIM_PORT NAMING_PORT_C WATCHDOG_PORT_C MISSING_PORT < <(python3 -c '
 import socket
-socks = [socket.socket() for _ in range(3)]
+socks = [socket.socket() for _ in range(6)]
 for s in socks: s.bind(("127.0.0.1", 0))
 print(*[s.getsockname()[1] for s in socks])')
 
@@ -81,12 +84,26 @@ run "$RGCTL" down "$SET_A"
 expect_refusal "pid $WATCHDOG_PID .*does not answer: it is stopped.*kill -CONT $WATCHDOG_PID"
 kill -CONT "$WATCHDOG_PID"
 
-# A killed watchdog: its modules keep running; status and down find them from the state file.
+# A killed watchdog: its modules keep running; status finds them from the state file, and a new
+# watchdog adopts them, showing how long they have really run.
 kill -KILL "$WATCHDOG_PID"
 wait_gone "$WATCHDOG_PID"
 run "$RGCTL" status "$SET_A"
 remember_table_pids
 expect_refusal "set 'opa' is not up .*2 of its modules still run"
+LEFTOVER_AGE=$(awk '$1 == "Simulator" { print $4 }' <<<"$RUN_OUT")
+run "$RGCTL" up "$SET_A"
+remember_watchdog_pid
+expect_ok
+run "$RGCTL" status "$SET_A"
+expect_output "Simulator +RUNNING"
+ADOPTED_UPTIME=$(awk '$1 == "Simulator" { print $4 }' <<<"$RUN_OUT")
+run awk -v a="${ADOPTED_UPTIME:-0}" -v l="${LEFTOVER_AGE:-1}" 'BEGIN { print (a >= l ? "adopted uptime is the process uptime" : "adopted uptime " a " s < " l " s") }'
+expect_output "adopted uptime is the process uptime"
+
+# Killed again: down stops what it left running.
+kill -KILL "$WATCHDOG_PID"
+wait_gone "$WATCHDOG_PID"
 run "$RGCTL" down "$SET_A"
 expect_output "stopping the 2 modules it left running.*NameService \(pid [0-9]+\).*Simulator \(pid [0-9]+\)"
 run "$RGCTL" status "$SET_A"
@@ -104,3 +121,28 @@ wait_gone "$WATCHDOG_PID"
 rm -rf -- "$WORK/run-a"
 run "$RGCTL" up "$SET_A"
 expect_refusal "port $SIM_PORT \(its Simulator\) is held by pid $SIM_PID"
+
+# A module whose program does not exist: up fails, and the status says why.
+SET_C="$WORK/sets/opc.yaml"
+cat >"$SET_C" <<EOF
+robot: tumbot
+host: 127.0.0.1
+run_dir: $WORK/run-c
+naming: {host: 127.0.0.1, port: $NAMING_PORT_C, managed: true}
+watchdog: {port: $WATCHDOG_PORT_C}
+modules:
+  - name: Missing
+    command: ["$WORK/no-such-program"]
+    port: $MISSING_PORT
+    objects: [Missing]
+    max_restarts: 1
+    backoff_initial_s: 0.05
+EOF
+run "$RGCTL" up "$SET_C"
+remember_watchdog_pid
+expect_refusal "Missing is FATAL: .*cannot exec '$WORK/no-such-program': No such file or directory"
+run "$RGCTL" status "$SET_C"
+remember_table_pids
+expect_output "Missing +FATAL +0 +[0-9.]+ +1  FATAL: .*after 1 restarts"
+run "$RGCTL" down "$SET_C"
+expect_ok
