@@ -51,6 +51,37 @@ std::string unreachable(const rgnav::SetConfig& set, std::optional<pid_t> watchd
          " of its modules still run (`rgctl down " + set.name + "` stops them)";
 }
 
+// 0 if no port of the set is held (but by the modules the state file names, which a new watchdog
+// adopts); else names each port and its holder.
+int checkPorts(const rgnav::SetConfig& set) {
+  const auto held = rgnav::heldPorts(set, rgnav::leftoverModules(set));
+  for (const auto& h : held)
+    std::cerr << "rgnav-ctl: set '" << set.name << "' cannot start: port " << h.port << " (its " << h.user
+              << ") is held by "
+              << (h.holder.pid ? "pid " + std::to_string(h.holder.pid) + " (" + h.holder.command + ")"
+                               : std::string("a process of another user"))
+              << std::endl;
+  if (held.empty()) return 0;
+  std::cerr << "rgnav-ctl: stop those processes (kill <pid>) or give the set other ports" << std::endl;
+  return kNotReachable;
+}
+
+// Stops the modules a watchdog that is gone left running (none: the set is not up).
+int stopLeftoverModules(const rgnav::SetConfig& set) {
+  const auto leftovers = rgnav::leftoverModules(set);
+  if (leftovers.empty()) {
+    std::cout << "rgnav-ctl: set '" << set.name << "' is not up" << std::endl;
+    return 0;
+  }
+  std::cout << "rgnav-ctl: set '" << set.name << "' has no watchdog; stopping the " << leftovers.size()
+            << " modules it left running:";
+  for (const auto& m : leftovers) std::cout << " " << m.record.module << " (pid " << m.record.pid << ")";
+  std::cout << std::endl;
+  rgnav::stopLeftovers(set, leftovers);
+  std::cout << "rgnav-ctl: set '" << set.name << "' down" << std::endl;
+  return 0;
+}
+
 bool isGone(pid_t pid) {
   const std::optional<rgnav::ProcStat> stat = rgnav::readProcStat(pid);
   return !stat || stat->state == 'Z' || stat->state == 'X';
@@ -132,32 +163,8 @@ int main(int argc, char** argv) {
       return 0;
     }
     const std::optional<pid_t> expected = watchdogPid > 0 ? std::optional<pid_t>(watchdogPid) : std::nullopt;
-    if (command == "check-ports") {
-      const auto held = rgnav::heldPorts(set, rgnav::leftoverModules(set));
-      for (const auto& h : held)
-        std::cerr << "rgnav-ctl: set '" << set.name << "' cannot start: port " << h.port << " (its " << h.user
-                  << ") is held by "
-                  << (h.holder.pid ? "pid " + std::to_string(h.holder.pid) + " (" + h.holder.command + ")"
-                                   : std::string("a process of another user"))
-                  << std::endl;
-      if (!held.empty())
-        std::cerr << "rgnav-ctl: stop those processes (kill <pid>) or give the set other ports" << std::endl;
-      return held.empty() ? 0 : kNotReachable;
-    }
-    if (command == "stop-leftovers") {
-      const auto leftovers = rgnav::leftoverModules(set);
-      if (leftovers.empty()) {
-        std::cout << "rgctl: set '" << set.name << "' is not up" << std::endl;
-        return 0;
-      }
-      std::cout << "rgctl: set '" << set.name << "' has no watchdog; stopping the " << leftovers.size()
-                << " modules it left running:";
-      for (const auto& m : leftovers) std::cout << " " << m.record.module << " (pid " << m.record.pid << ")";
-      std::cout << std::endl;
-      rgnav::stopLeftovers(set, leftovers);
-      std::cout << "rgctl: set '" << set.name << "' down" << std::endl;
-      return 0;
-    }
+    if (command == "check-ports") return checkPorts(set);
+    if (command == "stop-leftovers") return stopLeftoverModules(set);
     rgnav::ClientSettings settings = rgnav::ClientSettings::fromEnvironment();
     settings.namingHost = set.naming.host;
     settings.namingPort = set.naming.port;
