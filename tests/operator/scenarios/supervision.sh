@@ -8,9 +8,13 @@
 # its PID at the end, also when the scenario fails half-way.
 
 STARTED_PIDS=()
+# `rgctl up` remembers the set it started in run/.last-set: the user's own is put back afterwards.
+LAST_SET_FILE="$ROOT/run/.last-set"
+LAST_SET_SAVED=$(cat "$LAST_SET_FILE" 2>/dev/null)
 cleanup_supervision() {
   local pid
   for pid in "${STARTED_PIDS[@]}"; do kill -CONT "$pid" 2>/dev/null; kill -KILL "$pid" 2>/dev/null; done
+  if [[ -n $LAST_SET_SAVED ]]; then echo "$LAST_SET_SAVED" >"$LAST_SET_FILE"; else rm -f -- "$LAST_SET_FILE"; fi
   return 0
 }
 trap cleanup_supervision EXIT
