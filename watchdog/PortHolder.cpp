@@ -1,7 +1,10 @@
 // Listening sockets and their processes from /proc (see PortHolder.h).
 #include "watchdog/PortHolder.h"
 
+#include <arpa/inet.h>
+
 #include <algorithm>
+#include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <set>
@@ -19,8 +22,21 @@ namespace {
 
 constexpr const char* kListen = "0A";  // TCP_LISTEN in the "st" column
 
-// The inodes of the sockets listening on `port`, as "socket:[<inode>]" (the fd link text).
-std::set<std::string> listeningSockets(int port) {
+constexpr const char* kAnyAddress = "00000000";
+
+// The address of a host as /proc/net/tcp writes it (the 32 bits of the in_addr as hex in the
+// machine's byte order); nullopt for a host that is not an IPv4 address.
+std::optional<std::string> procAddressOf(const std::string& host) {
+  in_addr address{};
+  if (::inet_pton(AF_INET, host.c_str(), &address) != 1) return std::nullopt;
+  char text[9];
+  std::snprintf(text, sizeof text, "%08X", address.s_addr);
+  return std::string(text);
+}
+
+// The inodes of the sockets listening on `port`, as "socket:[<inode>]" (the fd link text): at
+// `address` (and the wildcard address) if given, else at any address.
+std::set<std::string> listeningSockets(int port, const std::optional<std::string>& address = std::nullopt) {
   std::set<std::string> sockets;
   for (const char* table : {"/proc/net/tcp", "/proc/net/tcp6"}) {
     std::ifstream in(table);
@@ -33,6 +49,9 @@ std::set<std::string> listeningSockets(int port) {
         continue;
       const std::size_t colon = local.rfind(':');
       if (state != kListen || colon == std::string::npos || inode == "0") continue;
+      const std::string at = local.substr(0, colon);
+      const bool anywhere = at.find_first_not_of('0') == std::string::npos;  // IPv4 or IPv6 wildcard
+      if (address && !anywhere && at != *address) continue;
       if (std::stoi(local.substr(colon + 1), nullptr, 16) == port) sockets.insert("socket:[" + inode + "]");
     }
   }
@@ -63,8 +82,8 @@ std::vector<pid_t> processes() {
 
 }  // namespace
 
-std::optional<PortHolder> findPortHolder(int port) {
-  const std::set<std::string> sockets = listeningSockets(port);
+std::optional<PortHolder> findPortHolder(const HostPort& endpoint) {
+  const std::set<std::string> sockets = listeningSockets(endpoint.port, procAddressOf(endpoint.host));
   if (sockets.empty()) return std::nullopt;
   for (const pid_t pid : processes())
     if (hasOpen(pid, sockets)) return PortHolder{pid, commandLineOf(pid)};

@@ -9,6 +9,8 @@
 #include <optional>
 #include <string>
 
+#include "core/common/HostPort.h"
+
 namespace rgnav {
 
 struct PortHolder {
@@ -16,11 +18,12 @@ struct PortHolder {
   std::string command;  // its command line, space-separated; empty if pid is 0
 };
 
-// The process listening on `port` (any local address); nullopt if nobody listens.
-std::optional<PortHolder> findPortHolder(int port);
+// The process listening on the endpoint: on its port at its IPv4 address or at the wildcard
+// address (any address if the host is not an IPv4 address); nullopt if nobody listens there.
+std::optional<PortHolder> findPortHolder(const HostPort& endpoint);
 
 // True if a process of the process group led by `leader` (a supervised module leads its own)
-// listens on `port`.
+// listens on `port`, at any local address.
 bool groupListensOn(pid_t leader, int port);
 
 // The command line of a process, its arguments joined by spaces; empty if it is gone.

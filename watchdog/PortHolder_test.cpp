@@ -1,6 +1,6 @@
 // Tests finding a port's holder from /proc: a socket this test listens on names this process
 // and its command line; a port nobody listens on has no holder; a process group listens on a port
-// only if one of its processes does; a command line reads as words.
+// only if one of its processes does; a socket at another loopback address is another host's.
 #include <cppunit/extensions/HelperMacros.h>
 #include <netinet/in.h>
 #include <sys/socket.h>
@@ -43,17 +43,20 @@ class PortHolderTest : public CppUnit::TestFixture {
  public:
   void listeningSocketNamesThisProcess() {
     LoopbackSocket socket(true);
-    const std::optional<rgnav::PortHolder> holder = rgnav::findPortHolder(socket.port);
+    const std::optional<rgnav::PortHolder> holder = rgnav::findPortHolder({"127.0.0.1", socket.port});
     CPPUNIT_ASSERT(holder);
     CPPUNIT_ASSERT_EQUAL(::getpid(), holder->pid);
     CPPUNIT_ASSERT(holder->command.find("port_holder_test") != std::string::npos);
     CPPUNIT_ASSERT(rgnav::groupListensOn(::getpid(), socket.port));
     CPPUNIT_ASSERT(!rgnav::groupListensOn(::getppid(), socket.port));
+    // Another loopback address is another host: the same port number there is free.
+    CPPUNIT_ASSERT(!rgnav::findPortHolder({"127.0.0.2", socket.port}));
+    CPPUNIT_ASSERT(rgnav::findPortHolder({"localhost", socket.port}));  // not an address: any address
   }
 
   void boundButNotListeningHasNoHolder() {
     LoopbackSocket socket(false);
-    CPPUNIT_ASSERT(!rgnav::findPortHolder(socket.port));
+    CPPUNIT_ASSERT(!rgnav::findPortHolder({"127.0.0.1", socket.port}));
     CPPUNIT_ASSERT(!rgnav::groupListensOn(::getpid(), socket.port));
   }
 };

@@ -41,15 +41,16 @@ void stopLeftovers(const SetConfig& set, const std::vector<LeftoverModule>& left
 }
 
 std::vector<HeldPort> heldPorts(const SetConfig& set, const std::vector<LeftoverModule>& own) {
-  std::vector<std::pair<std::string, int>> ports{{"watchdog", set.watchdog.port}};
-  for (const SupervisedModule& module : supervisedModules(set)) ports.emplace_back(module.spec.name, module.endpoint.port);
+  std::vector<std::pair<std::string, HostPort>> endpoints{{"watchdog", {set.host, set.watchdog.port}}};
+  for (const SupervisedModule& module : supervisedModules(set)) endpoints.emplace_back(module.spec.name, module.endpoint);
   std::vector<HeldPort> held;
-  for (const auto& [user, port] : ports) {
-    const bool adoptable = std::any_of(own.begin(), own.end(), [&, port = port](const LeftoverModule& m) {
+  for (const auto& [user, endpoint] : endpoints) {
+    const int port = endpoint.port;
+    const bool adoptable = std::any_of(own.begin(), own.end(), [&](const LeftoverModule& m) {
       return groupListensOn(m.record.pid, port);
     });
     if (adoptable) continue;
-    if (const std::optional<PortHolder> holder = findPortHolder(port)) held.push_back({user, port, *holder});
+    if (const std::optional<PortHolder> holder = findPortHolder(endpoint)) held.push_back({user, port, *holder});
   }
   return held;
 }

@@ -39,7 +39,7 @@ ClusterModule impostorModule() {
 struct PortHolderKiller {
   int port;
   ~PortHolderKiller() {
-    const std::optional<PortHolder> holder = findPortHolder(port);
+    const std::optional<PortHolder> holder = findPortHolder({"127.0.0.1", port});
     std::string endpoint(1, ':');
     endpoint.append(std::to_string(port));
     if (holder && holder->pid > 1 && holder->command.find(endpoint) != std::string::npos)
@@ -101,7 +101,7 @@ class LeftoversIntegrationTest : public CppUnit::TestFixture {
     CPPUNIT_ASSERT_MESSAGE(hung.detail, hung.detail.find("no answer within the start timeout") != std::string::npos);
     CPPUNIT_ASSERT(eventsOf(watchdog, "Impostor", "ready").empty());
     // The impostor did answer on the module's port all along.
-    const std::optional<PortHolder> holder = findPortHolder(cluster.modulePort("Impostor"));
+    const std::optional<PortHolder> holder = findPortHolder({"127.0.0.1", cluster.modulePort("Impostor")});
     CPPUNIT_ASSERT(holder && holder->command.find("rgnav-carmen-playback") != std::string::npos);
   }
 };

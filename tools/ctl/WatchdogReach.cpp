@@ -17,7 +17,7 @@ std::optional<pid_t> recordedWatchdogPid(const SetConfig& set) {
 
 WatchdogCheck checkWatchdog(const SetConfig& set, std::optional<pid_t> expectedPid) {
   const std::string where = set.host + ":" + std::to_string(set.watchdog.port);
-  const std::optional<PortHolder> holder = findPortHolder(set.watchdog.port);
+  const std::optional<PortHolder> holder = findPortHolder({set.host, set.watchdog.port});
   if (!holder)
     return {WatchdogReach::NotListening, "set '" + set.name + "' is not up (no watchdog at " + where + ")"};
   if (!expectedPid) expectedPid = recordedWatchdogPid(set);
