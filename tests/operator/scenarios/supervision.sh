@@ -51,14 +51,14 @@ write_set "$SET_B" "$WORK/run-b"
 # The PIDs in the PID column of a status table (modules, leftovers).
 remember_table_pids() {
   local pid
-  for pid in $(awk 'NR > 1 && $3 ~ /^[0-9]+$/ && $3 > 0 { print $3 }' <<<"$RUN_OUT"); do STARTED_PIDS+=("$pid"); done
+  while read -r pid; do STARTED_PIDS+=("$pid"); done < <(awk 'NR > 1 && $3 ~ /^[0-9]+$/ && $3 > 0 { print $3 }' <<<"$RUN_OUT")
 }
 # The watchdog PID `rgctl up` reports.
 remember_watchdog_pid() {
   WATCHDOG_PID=$(grep -oE 'watchdog pid [0-9]+' <<<"$RUN_OUT" | grep -oE '[0-9]+' | head -n 1)
   [[ -n $WATCHDOG_PID ]] && STARTED_PIDS+=("$WATCHDOG_PID")
 }
-wait_gone() { local i; for i in $(seq 1 100); do kill -0 "$1" 2>/dev/null || return 0; sleep 0.05; done; }
+wait_gone() { for _ in $(seq 1 100); do kill -0 "$1" 2>/dev/null || return 0; sleep 0.05; done; }
 
 # Nothing runs yet: said at once, with the address tried.
 run "$RGCTL" status "$SET_A"
