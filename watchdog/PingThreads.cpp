@@ -10,10 +10,12 @@ PingThreads::PingThreads(std::map<std::string, Ping> pings, OnResult onResult) :
 
 PingThreads::~PingThreads() { stop(); }
 
-void PingThreads::ping(const std::string& module) {
+void PingThreads::ping(const std::string& module, pid_t pid) {
   {
     std::lock_guard lock(mutex_);
-    slots_.at(module).asked = true;
+    Slot& slot = slots_.at(module);
+    slot.asked = true;
+    slot.pid = pid;
   }
   wake_.notify_all();
 }
@@ -34,8 +36,9 @@ void PingThreads::run(const std::string& module, Slot& slot) {
     wake_.wait(lock, [&] { return stopping_ || slot.asked; });
     if (stopping_) return;
     slot.asked = false;
+    const pid_t pid = slot.pid;
     lock.unlock();
-    const bool answered = slot.ping();
+    const bool answered = slot.ping(pid);
     lock.lock();
     if (stopping_) return;
     lock.unlock();

@@ -18,8 +18,8 @@ namespace rgnav {
 
 class PingThreads : public LivenessProbe {
  public:
-  // True if the module answered.
-  using Ping = std::function<bool()>;
+  // True if the module's process (this PID) answered.
+  using Ping = std::function<bool(pid_t)>;
   // Called on the module's thread, with no lock of this class held.
   using OnResult = std::function<void(const std::string& module, bool answered)>;
 
@@ -29,7 +29,7 @@ class PingThreads : public LivenessProbe {
   PingThreads& operator=(const PingThreads&) = delete;
 
   // std::out_of_range for a module without a ping.
-  void ping(const std::string& module) override;
+  void ping(const std::string& module, pid_t pid) override;
   // Ends the threads once their current ping is over; no callback follows.
   void stop();
 
@@ -37,6 +37,7 @@ class PingThreads : public LivenessProbe {
   struct Slot {
     Ping ping;
     bool asked = false;
+    pid_t pid = 0;  // of the asked ping
   };
   void run(const std::string& module, Slot& slot);
 

@@ -49,10 +49,12 @@ class PingThreadsTest : public CppUnit::TestFixture {
   void outcomesReachTheCallback() {
     Outcomes outcomes;
     std::atomic<int> calls{0};
-    PingThreads pings({{"A", [&] { ++calls; return true; }}, {"B", [&] { ++calls; return false; }}},
+    // Each ping asks for the process it was given: A's answers, B's is another one.
+    PingThreads pings({{"A", [&](pid_t pid) { ++calls; return pid == 42; }},
+                       {"B", [&](pid_t pid) { ++calls; return pid == 42; }}},
                       outcomes.callback());
-    pings.ping("A");
-    pings.ping("B");
+    pings.ping("A", 42);
+    pings.ping("B", 43);
     waitUntil([&] { return outcomes.has("A") && outcomes.has("B"); }, "both outcomes");
     pings.stop();
     CPPUNIT_ASSERT((outcomes.all() == std::multimap<std::string, bool>{{"A", true}, {"B", false}}));
@@ -62,14 +64,14 @@ class PingThreadsTest : public CppUnit::TestFixture {
   void aBlockedPingHoldsUpNoOther() {
     Outcomes outcomes;
     std::atomic<bool> release{false};
-    PingThreads pings({{"Hung", [&] {
+    PingThreads pings({{"Hung", [&](pid_t) {
                          waitUntil([&] { return release.load(); }, "the test to release the hung ping");
                          return false;
                        }},
-                       {"Fine", [] { return true; }}},
+                       {"Fine", [](pid_t) { return true; }}},
                       outcomes.callback());
-    pings.ping("Hung");
-    pings.ping("Fine");
+    pings.ping("Hung", 42);
+    pings.ping("Fine", 43);
     waitUntil([&] { return outcomes.has("Fine"); }, "the outcome of Fine");
     CPPUNIT_ASSERT(!outcomes.has("Hung"));
     release = true;

@@ -1,5 +1,6 @@
-// Tests /proc/<pid>/stat reading: start time identifies a process, odd command names parse,
-// zombies and missing processes are not alive.
+// Tests /proc/<pid>/stat reading: start time identifies a process, odd command names parse (and
+// the fields after them: the process group), zombies and missing processes are not alive, and a
+// process's age comes from its start time.
 #include <cppunit/extensions/HelperMacros.h>
 #include <time.h>
 #include <unistd.h>
@@ -37,6 +38,7 @@ class ProcStatTest : public CppUnit::TestFixture {
   CPPUNIT_TEST(readsOwnProcess);
   CPPUNIT_TEST(startTimeIsStableAndDiffersForNewProcess);
   CPPUNIT_TEST(parsesCommandNameWithParenthesisAndSpace);
+  CPPUNIT_TEST(ageCountsFromTheStartTime);
   CPPUNIT_TEST(missingProcessIsNotAlive);
   CPPUNIT_TEST(zombieIsNotAlive);
   CPPUNIT_TEST_SUITE_END();
@@ -73,6 +75,16 @@ class ProcStatTest : public CppUnit::TestFixture {
     ProcessGuard guard(p.pid(), p.startTime());
     rgnav::testing::waitUntil([&] { return readProcStat(p.pid())->state == 'S'; }, "the program to sleep");
     CPPUNIT_ASSERT(rgnav::isProcessAlive(p.pid(), p.startTime()));
+    CPPUNIT_ASSERT_EQUAL(p.pid(), readProcStat(p.pid())->group);  // it leads its own process group
+  }
+  void ageCountsFromTheStartTime() {
+    const std::optional<rgnav::ProcStat> self = readProcStat(getpid());
+    const auto ticksPerSecond = static_cast<std::uint64_t>(sysconf(_SC_CLK_TCK));
+    CPPUNIT_ASSERT(rgnav::processAge(self->startTime) >= std::chrono::nanoseconds(0));
+    // A process that started 10 s earlier is 10 s older (give or take the clock tick and the reads).
+    const double older = std::chrono::duration<double>(rgnav::processAge(self->startTime - 10 * ticksPerSecond) -
+                                                       rgnav::processAge(self->startTime)).count();
+    CPPUNIT_ASSERT_DOUBLES_EQUAL(10.0, older, 0.5);
   }
   void missingProcessIsNotAlive() {
     const pid_t impossible = std::numeric_limits<pid_t>::max();

@@ -6,6 +6,7 @@
 #include <filesystem>
 
 #include "core/common/Errors.h"
+#include "watchdog/ProcStat.h"
 
 namespace rgnav {
 
@@ -47,10 +48,10 @@ pid_t SetProcesses::start(const std::string& module) {
   return pid;
 }
 
-bool SetProcesses::adopt(const ProcessRecord& record) {
-  if (!table_.adopt(record)) return false;
+std::optional<std::chrono::nanoseconds> SetProcesses::adopt(const ProcessRecord& record) {
+  if (!table_.adopt(record)) return std::nullopt;
   saveState();
-  return true;
+  return processAge(record.startTime);
 }
 
 void SetProcesses::kill(const std::string& module) {

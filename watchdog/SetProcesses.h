@@ -22,7 +22,7 @@ class SetProcesses : public ModuleProcesses {
   SetProcesses(const SetConfig& config, SupervisionEvents& events);
 
   pid_t start(const std::string& module) override;
-  bool adopt(const ProcessRecord& record) override;
+  std::optional<std::chrono::nanoseconds> adopt(const ProcessRecord& record) override;
   void kill(const std::string& module) override;
   void requestStop(const std::string& module, SupervisionClock::time_point now,
                    std::chrono::nanoseconds timeout) override;

@@ -29,8 +29,9 @@
 
 namespace rgnav {
 
-// Answers whether one module is alive; made once per module and called on its ping thread.
-using ProbeFactory = std::function<std::function<bool()>(const ModuleSpec& module, const HostPort& endpoint)>;
+// Answers whether one module's process (the PID it is given) is alive; made once per module and
+// called on its ping thread.
+using ProbeFactory = std::function<PingThreads::Ping(const ModuleSpec& module, const HostPort& endpoint)>;
 
 class SupervisedSet {
  public:

@@ -14,6 +14,7 @@
 #include "core/common/Errors.h"
 #include "servers/common/ServerRuntime.h"
 #include "watchdog/CorbaPing.h"
+#include "watchdog/PortHolder.h"
 #include "watchdog/SetLoading.h"
 #include "watchdog/WatchdogImpl.h"
 #include "tools/common/CommandLine.h"
@@ -69,7 +70,10 @@ int main(int argc, char** argv) {
       auto set = std::make_shared<rgnav::SupervisedSet>(
           config, [&runtime, timeout](const rgnav::ModuleSpec& module, const rgnav::HostPort& at) {
             auto probe = std::make_shared<rgnav::CorbaPing>(runtime.orb(), at, module.objects.front(), timeout);
-            return std::function<bool()>([probe] { return probe->answers(); });
+            // Only the process this watchdog started counts: after a port clash the answer would
+            // come from somebody else's process.
+            return rgnav::PingThreads::Ping(
+                [probe, port = at.port](pid_t pid) { return rgnav::groupListensOn(pid, port) && probe->answers(); });
           });
       runtime.activate("Watchdog", new rgnav::WatchdogImpl(runtime, *set), "Watchdog-" + config.name);
       set->start();

@@ -11,6 +11,8 @@ std::string ExitStatus::describe() const {
       return "killed by signal " + std::to_string(value_);
     case Kind::Lost:
       return "vanished (adopted process, status unknown)";
+    case Kind::NotStarted:
+      return cause_;
   }
   return "unknown exit";
 }

@@ -1,18 +1,21 @@
-// How a supervised process ended: an exit code, a killing signal, or "lost" (an adopted process
-// that is not our child vanished, so its status cannot be known).
+// How a supervised process ended: an exit code, a killing signal, "lost" (an adopted process
+// that is not our child vanished, so its status cannot be known), or "not started" (it could not
+// be spawned; the cause, e.g. "cannot exec 'x': No such file or directory", is kept).
 #pragma once
 
 #include <string>
+#include <utility>
 
 namespace rgnav {
 
 class ExitStatus {
  public:
-  enum class Kind { Exited, Signaled, Lost };
+  enum class Kind { Exited, Signaled, Lost, NotStarted };
 
   static ExitStatus exited(int code) { return ExitStatus(Kind::Exited, code); }
   static ExitStatus signaled(int signal) { return ExitStatus(Kind::Signaled, signal); }
   static ExitStatus lost() { return ExitStatus(Kind::Lost, 0); }
+  static ExitStatus notStarted(std::string cause) { return ExitStatus(Kind::NotStarted, 0, std::move(cause)); }
 
   Kind kind() const { return kind_; }
   int code() const { return kind_ == Kind::Exited ? value_ : -1; }
@@ -24,9 +27,11 @@ class ExitStatus {
   bool operator==(const ExitStatus&) const = default;
 
  private:
-  ExitStatus(Kind kind, int value) : kind_(kind), value_(value) {}
+  ExitStatus(Kind kind, int value, std::string cause = {})
+      : kind_(kind), value_(value), cause_(std::move(cause)) {}
   Kind kind_;
   int value_;
+  std::string cause_;  // of NotStarted
 };
 
 }  // namespace rgnav

@@ -5,6 +5,8 @@
 // (watchdog/PingThreads.h); tests answer by hand.
 #pragma once
 
+#include <sys/types.h>
+
 #include <string>
 
 namespace rgnav {
@@ -13,8 +15,10 @@ class LivenessProbe {
  public:
   virtual ~LivenessProbe() = default;
 
-  // Pings the module; called only while no earlier ping of it is outstanding.
-  virtual void ping(const std::string& module) = 0;
+  // Pings the module's process `pid`: an answer from any other process (one that holds the
+  // module's port after a clash) is no answer. Called only while no earlier ping of it is
+  // outstanding.
+  virtual void ping(const std::string& module, pid_t pid) = 0;
 };
 
 }  // namespace rgnav

@@ -7,6 +7,7 @@
 #include <sys/types.h>
 
 #include <chrono>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -29,9 +30,10 @@ class ModuleProcesses {
   // Starts the module's process as the leader of its own process group and returns its PID.
   // Throws an Error (with the reason) if it cannot be started.
   virtual pid_t start(const std::string& module) = 0;
-  // Takes over a process left running by a previous watchdog. False if no process with that PID
-  // runs, or the PID now belongs to a process with another start time (a reused PID).
-  virtual bool adopt(const ProcessRecord& record) = 0;
+  // Takes over a process left running by a previous watchdog and returns how long it has run.
+  // nullopt if no process with that PID runs, or the PID now belongs to a process with another
+  // start time (a reused PID).
+  virtual std::optional<std::chrono::nanoseconds> adopt(const ProcessRecord& record) = 0;
   // SIGKILL to the module's process group.
   virtual void kill(const std::string& module) = 0;
   // SIGTERM to the module's process group now; SIGKILL once `timeout` has passed (see reap).

@@ -23,7 +23,8 @@ struct Supervisor::Module {
   bool restartAfterStop = false;
   std::optional<Clock::time_point> restartAt;
   std::optional<Clock::time_point> stopGiveUpAt;  // of a shutdown stop
-  Clock::time_point startedAt;
+  Clock::time_point startedAt;  // of the process (an adopted one started before this watchdog)
+  Clock::time_point adoptedAt;  // of a process left running by a previous watchdog, else startedAt
   pid_t pid = 0;
   std::uint32_t restarts = 0;
   std::string lastEvent;
@@ -61,11 +62,14 @@ void Supervisor::adopt(const std::vector<ProcessRecord>& left, Clock::time_point
   for (const ProcessRecord& record : left) {
     const auto it = std::find_if(modules_.begin(), modules_.end(),
                                  [&](const Module& m) { return m.name() == record.module; });
-    if (it == modules_.end() || it->pid != 0 || !processes_.adopt(record)) continue;
+    if (it == modules_.end() || it->pid != 0) continue;
+    const std::optional<std::chrono::nanoseconds> age = processes_.adopt(record);
+    if (!age) continue;
     Module& module = *it;
     module.pid = record.pid;
     module.state = ProcessState::Starting;
-    module.startedAt = now;
+    module.startedAt = now - *age;  // its uptime is the process's, not the new watchdog's
+    module.adoptedAt = now;
     module.nextPingAt = now;
     module.everStarted = true;
     event(module, "adopted", "pid " + std::to_string(record.pid) + " left running by a previous watchdog");
@@ -87,13 +91,13 @@ void Supervisor::launch(Module& module, Launch kind, Clock::time_point now) {
   } catch (const std::exception& e) {
     module.everStarted = true;
     event(module, "spawn-failed", e.what());
-    handleExit(module, ExitStatus::exited(127), now);
+    handleExit(module, ExitStatus::notStarted(e.what()), now);
     return;
   }
   module.state = ProcessState::Starting;
   module.startedAt = now;
+  module.adoptedAt = now;
   module.nextPingAt = now;  // its heartbeat starts at once
-  if (kind == Launch::Restart) ++module.restarts;
   module.everStarted = true;
   event(module, why, "pid " + std::to_string(module.pid));
 }
@@ -108,6 +112,7 @@ void Supervisor::handleExit(Module& module, const ExitStatus& status, Clock::tim
       module.restartAfterStop = false;
       module.wanted = true;
       module.tracker.reset();
+      module.restarts = 0;
       launch(module, Launch::OperatorRestart, now);
     }
     return;
@@ -120,6 +125,7 @@ void Supervisor::handleExit(Module& module, const ExitStatus& status, Clock::tim
   const RestartDecision decision = module.tracker.onExit(ExitInfo{status, false}, now);
   switch (decision.action) {
     case RestartDecision::Action::Restart: {
+      ++module.restarts;  // counted when decided, as the event says, even if the start then fails
       const double delay = std::chrono::duration<double>(decision.delay).count();
       event(module, "exited",
             status.describe() + (delay > 0 ? "; restart in " + std::to_string(delay) + " s" : "; restarting"));
@@ -164,7 +170,7 @@ bool Supervisor::dependenciesReady(const Module& module) const {
 void Supervisor::tick(Clock::time_point now) {
   for (const ModuleExit& exit : processes_.reap(now)) handleExit(find(exit.module), exit.status, now);
   for (Module& module : modules_) {
-    if (module.state == ProcessState::Starting && now - module.startedAt > module.def.spec.policy.startTimeout)
+    if (module.state == ProcessState::Starting && now - module.adoptedAt > module.def.spec.policy.startTimeout)
       markHung(module, "no answer within the start timeout");
     else if (module.state == ProcessState::Backoff && module.restartAt && now >= *module.restartAt)
       launch(module, Launch::Restart, now);
@@ -181,7 +187,7 @@ void Supervisor::sendDuePings(Clock::time_point now) {
     if (!pinged || module.pid == 0 || module.pingOutstanding || now < module.nextPingAt) continue;
     module.pingOutstanding = true;
     module.pingedPid = module.pid;
-    probe_.ping(module.name());
+    probe_.ping(module.name(), module.pid);
   }
 }
 
@@ -227,6 +233,7 @@ void Supervisor::startModule(const std::string& name, Clock::time_point now) {
   if (module.pid != 0) return;  // already running
   module.wanted = true;
   module.tracker.reset();
+  module.restarts = 0;
   launch(module, Launch::OperatorStart, now);
 }
 

@@ -36,7 +36,9 @@ struct ModuleStatus {
   ProcessState state = ProcessState::Stopped;
   pid_t pid = 0;                          // 0: no process
   SupervisionClock::time_point startedAt;  // of the current process
-  std::uint32_t restarts = 0;             // automatic restarts since the watchdog started
+  // Automatic restarts decided since the watchdog or the operator last started the module (the
+  // count the restart and FATAL events give).
+  std::uint32_t restarts = 0;
   std::string lastEvent;
 };
 

@@ -20,18 +20,18 @@ namespace rgnav::testing {
 class FakeProcesses : public ModuleProcesses {
  public:
   pid_t start(const std::string& module) override {
-    if (failing.count(module)) throw Error("exec " + module + ": No such file or directory");
+    if (failing.count(module)) throw Error("cannot exec 'rgnav-" + module + "': No such file or directory");
     const pid_t pid = nextPid++;
     table[module] = pid;
     actions.push_back("start " + module);
     return pid;
   }
-  bool adopt(const ProcessRecord& record) override {
+  std::optional<std::chrono::nanoseconds> adopt(const ProcessRecord& record) override {
     const auto it = machine.find(record.pid);
-    if (it == machine.end() || it->second != record.startTime) return false;
+    if (it == machine.end() || it->second != record.startTime) return std::nullopt;
     table[record.module] = record.pid;
     actions.push_back("adopt " + record.module);
-    return true;
+    return adoptedAge;
   }
   void kill(const std::string& module) override { actions.push_back("kill " + module); }
   void requestStop(const std::string& module, SupervisionClock::time_point, std::chrono::nanoseconds) override {
@@ -51,6 +51,7 @@ class FakeProcesses : public ModuleProcesses {
   std::map<std::string, pid_t> table;             // live processes by module
   std::map<pid_t, std::uint64_t> machine;         // adoptable processes: PID -> start time
   std::set<std::string> failing;                  // modules whose start throws
+  std::chrono::nanoseconds adoptedAge{0};         // how long an adoptable process has run
   std::vector<std::string> actions;               // "start A", "adopt A", "kill A", "stop A"
   std::vector<ModuleExit> ended;
   pid_t nextPid = 100;
@@ -58,7 +59,7 @@ class FakeProcesses : public ModuleProcesses {
 
 class FakeProbe : public LivenessProbe {
  public:
-  void ping(const std::string& module) override { outstanding.push_back(module); }
+  void ping(const std::string& module, pid_t) override { outstanding.push_back(module); }
   // Whether a ping of the module waits for its answer; takes it off the list.
   bool take(const std::string& module) {
     const auto it = std::find(outstanding.begin(), outstanding.end(), module);
