@@ -17,6 +17,7 @@
 #include "tools/cat/IdSequenceCheck.h"
 #include "tools/cat/RecordFormat.h"
 #include "tools/common/CommandLine.h"
+#include "tools/common/ToolClient.h"
 
 namespace po = boost::program_options;
 
@@ -99,9 +100,7 @@ int main(int argc, char** argv) {
   positional.add("stream", 1);
   try {
     if (!rgnav::parseCommandLine(argc, argv, desc, positional)) return 0;
-    rgnav::ClientSettings settings = rgnav::ClientSettings::fromEnvironment();
-    if (!naming.empty()) settings.setNaming(naming);
-    if (!robot.empty()) settings.robot = robot;
+    rgnav::ClientSettings settings = rgnav::toolClientSettings(naming, robot);
     settings.retryBudget = std::chrono::milliseconds(options.retryBudgetMs);
     settings.consumer = consumer;
     if (options.stream == "laser") {
@@ -140,6 +139,8 @@ int main(int argc, char** argv) {
                                       "' (laser, odometry, corrected or gateways)");
   } catch (const po::error& e) {
     std::cerr << "rgnav-cat: " << e.what() << "\n" << desc << std::endl;
+  } catch (const rgnav::ModuleUnavailableError& e) {
+    rgnav::reportUnreachable("rgnav-cat", e, true);
   } catch (const std::exception& e) {
     std::cerr << "rgnav-cat: " << e.what() << std::endl;
   }

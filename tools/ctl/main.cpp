@@ -8,6 +8,7 @@
 #include "clientlibs/watchdog/WatchdogClient.h"
 #include "watchdog/SetLoading.h"
 #include "tools/common/CommandLine.h"
+#include "tools/common/ToolClient.h"
 
 namespace po = boost::program_options;
 
@@ -77,6 +78,8 @@ int main(int argc, char** argv) {
     settings.namingHost = set.naming.host;
     settings.namingPort = set.naming.port;
     settings.retryBudget = std::chrono::milliseconds(static_cast<long>(timeout * 1000));
+    // wait-running waits for a watchdog that may still be starting; the rest answer at once.
+    if (command != "wait-running") settings.firstContactBudget = rgnav::kToolFirstContactBudget;
     rgnav::WatchdogClient watchdog({set.host, set.watchdog.port}, settings);
     if (command == "status") printStatus(watchdog.modules());
     else if (command == "wait-running") return waitRunning(watchdog, timeout) ? 0 : 1;
@@ -96,6 +99,8 @@ int main(int argc, char** argv) {
     return 0;
   } catch (const po::error& e) {
     std::cerr << "rgnav-ctl: " << e.what() << "\n" << desc << std::endl;
+  } catch (const rgnav::ModuleUnavailableError& e) {
+    rgnav::reportUnreachable("rgnav-ctl", e, false);
   } catch (const std::exception& e) {
     std::cerr << "rgnav-ctl: " << e.what() << std::endl;
   }

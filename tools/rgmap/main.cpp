@@ -17,6 +17,7 @@
 #include "clientlibs/rgmappingkernel/RgMappingKernelClient.h"
 #include "core/common/Errors.h"
 #include "tools/common/CommandLine.h"
+#include "tools/common/ToolClient.h"
 
 namespace po = boost::program_options;
 using namespace rgnav;
@@ -104,9 +105,7 @@ int main(int argc, char** argv) {
   positional.add("command", 1).add("args", -1);
   try {
     if (!parseCommandLine(argc, argv, desc, positional)) return 0;
-    ClientSettings settings = ClientSettings::fromEnvironment();
-    if (!naming.empty()) settings.setNaming(naming);
-    if (!robot.empty()) settings.robot = robot;
+    ClientSettings settings = toolClientSettings(naming, robot);
     settings.retryBudget = std::chrono::seconds(30);
     RgMappingKernelClient kernel(settings);
     const auto want = [&](std::size_t n) {
@@ -151,6 +150,8 @@ int main(int argc, char** argv) {
     return 0;
   } catch (const po::error& e) {
     std::cerr << "rgnav-rgmap: " << e.what() << "\n" << desc << std::endl;
+  } catch (const ModuleUnavailableError& e) {
+    reportUnreachable("rgnav-rgmap", e, true);
   } catch (const std::exception& e) {
     std::cerr << "rgnav-rgmap: " << e.what() << std::endl;
   }
