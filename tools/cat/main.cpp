@@ -95,7 +95,8 @@ int main(int argc, char** argv) {
       ("quiet", po::bool_switch(&options.quiet), "print only the summary")
       ("record", po::value(&options.record)->default_value(""), "also write every record to this file")
       ("poll-ms", po::value(&options.pollMs)->default_value(20), "wait between empty requests")
-      ("retry-budget-ms", po::value(&options.retryBudgetMs)->default_value(15000), "give up on a module after this");
+      ("retry-budget-ms", po::value(&options.retryBudgetMs)->default_value(15000),
+       "give up on a module that stops answering after this (one never reached: after 1.5 s)");
   po::positional_options_description positional;
   positional.add("stream", 1);
   try {
