@@ -99,7 +99,9 @@ bool ClientConnection::refresh(std::string& failure) {
 void ClientConnection::invoke(const char* operation, Idempotence idempotence,
                               const std::function<void(CORBA::Object_ptr, std::uint64_t)>& op) {
   const auto start = Clock::now();
-  const auto budget = [this] { return reached_ ? settings_.retryBudget : settings_.firstContactBudget.value_or(settings_.retryBudget); };
+  const auto budget = [this] {
+    return reached_ ? settings_.retryBudget : settings_.firstContactBudget.value_or(settings_.retryBudget);
+  };
   const auto answered = [this] {
     reached_ = true;
     state_ = ConnectionState::Connected;

@@ -49,7 +49,8 @@ ClientSettings settingsFor(int namingPort) {
 // The message of the ModuleUnavailableError a ping through `connection` ends in.
 std::string unavailableMessage(ClientConnection& connection) {
   try {
-    connection.invoke("ping", Idempotence::Idempotent, [](CORBA::Object_ptr object, std::uint64_t) { object->_non_existent(); });
+    connection.invoke("ping", Idempotence::Idempotent,
+                      [](CORBA::Object_ptr object, std::uint64_t) { object->_non_existent(); });
   } catch (const ModuleUnavailableError& e) {
     return e.what();
   }

@@ -204,7 +204,8 @@ class RgMappingKernelIntegrationTest : public CppUnit::TestFixture {
     shortFirstContact.firstContactBudget = std::chrono::milliseconds(300);
     ClientConnection unbound("NoSuchModule", shortFirstContact);
     try {
-      unbound.invoke("ping", Idempotence::Idempotent, [](CORBA::Object_ptr object, std::uint64_t) { object->_non_existent(); });
+      unbound.invoke("ping", Idempotence::Idempotent,
+                     [](CORBA::Object_ptr object, std::uint64_t) { object->_non_existent(); });
       CPPUNIT_FAIL("NoSuchModule answered");
     } catch (const ModuleUnavailableError& e) {
       assertContains(e.what(), "NoSuchModule.ping: no answer within 300 ms from RGNav/" + shortFirstContact.robot +
