@@ -1,7 +1,9 @@
 // ClientConnection: the caller's side of one module object (DESIGN.md "Restarts are normal"):
 // resolves RGNav/<robot>/<Object> in the naming service, runs calls with timeouts, and on
 // TRANSIENT, COMM_FAILURE, TIMEOUT or OBJECT_NOT_EXIST re-resolves and retries with bounded
-// exponential backoff, then fails with ModuleUnavailableError naming the module and the call.
+// exponential backoff, then fails with ModuleUnavailableError naming the module, the call, where
+// it looked for the module and the last failure. Until the module has been reached once, the
+// settings' firstContactBudget bounds the retries instead of retryBudget.
 #pragma once
 
 #include <omniORB4/CORBA.h>
@@ -23,7 +25,9 @@ namespace rgnav {
 enum class ConnectionState { Connected, Reconnecting, Down };
 const char* toString(ConnectionState state);
 
-// A module did not answer within the retry budget.
+// A module did not answer within the retry budget. The message names the call, the object looked
+// up (RGNav/<robot>/<Object> and the naming service's host:port, or the direct corbaloc address)
+// and the last failure; a tool adds what the user can do about it.
 class ModuleUnavailableError : public Error {
  public:
   using Error::Error;
@@ -72,7 +76,12 @@ class ClientConnection {
   std::uint64_t reconnects() const { return reconnects_.load(); }
 
  private:
-  bool refresh();  // re-resolve the name; keeps the old reference if the naming service is away
+  // Re-resolves the name; keeps the old reference if the naming service is away. On false,
+  // `failure` says why (naming service unreachable, name not bound).
+  bool refresh(std::string& failure);
+  // Where the module is looked for, for messages: "RGNav/<robot>/<Object> in the naming service
+  // at host:port" or "corbaloc::host:port/<Object>".
+  std::string target() const;
 
   std::string objectName_;
   ClientSettings settings_;
@@ -80,6 +89,7 @@ class ClientConnection {
   CORBA::ORB_var orb_;
   CORBA::Object_var object_;
   std::uint64_t generation_ = 0;
+  bool reached_ = false;  // the module answered (or took a call) at least once
   std::atomic<ConnectionState> state_{ConnectionState::Reconnecting};
   std::atomic<std::uint64_t> reconnects_{0};
 };

@@ -5,6 +5,8 @@
 #include <string>
 #include <vector>
 
+#include "core/common/Errors.h"
+
 namespace rgnav {
 
 namespace {
@@ -34,7 +36,13 @@ CORBA::ORB_ptr processOrb(const ClientSettings& settings, const std::vector<std:
     std::vector<char*> argv;
     for (auto& a : args) argv.push_back(a.data());
     int argc = static_cast<int>(argv.size());
-    orb = CORBA::ORB_init(argc, argv.data());
+    try {
+      orb = CORBA::ORB_init(argc, argv.data());
+    } catch (const CORBA::SystemException& e) {
+      const char* minor = e.NP_minorString();
+      throw ConfigError(std::string("the ORB refused its options (omniORB's message above says which): ") + e._name() +
+                        (minor ? std::string(" (") + minor + ")" : std::string()));
+    }
     omniORB::installTransientExceptionHandler(nullptr, noRetry<CORBA::TRANSIENT>);
     omniORB::installCommFailureExceptionHandler(nullptr, noRetry<CORBA::COMM_FAILURE>);
     omniORB::installSystemExceptionHandler(nullptr, noRetry<CORBA::SystemException>);

@@ -2,9 +2,13 @@
 #pragma once
 
 #include <chrono>
+#include <optional>
 #include <string>
 
 namespace rgnav {
+
+// The first-contact budget of the command-line tools: they answer within 2 s either way.
+inline constexpr std::chrono::milliseconds kToolFirstContactBudget{1500};
 
 struct ClientSettings {
   std::string namingHost = "127.0.0.1";
@@ -14,6 +18,10 @@ struct ClientSettings {
   std::chrono::milliseconds callTimeout{2000};     // one call, answer included
   std::chrono::milliseconds connectTimeout{500};   // opening a connection
   std::chrono::milliseconds retryBudget{15000};    // retries of one call, then the module is down
+  // Until the module has been reached once, give up after this instead of retryBudget (unset: the
+  // same budget). A command-line tool sets it short (kToolFirstContactBudget): a set that is not
+  // up, or a wrong naming address, is reported at once instead of waited out like a restart.
+  std::optional<std::chrono::milliseconds> firstContactBudget;
   std::chrono::milliseconds backoffInitial{10};
   std::chrono::milliseconds backoffMax{200};
 

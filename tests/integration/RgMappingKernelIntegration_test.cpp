@@ -41,6 +41,21 @@ std::string refusedField(F&& call) {
   return "(accepted)";
 }
 
+// The message of the ModuleFailedError a call ends in; "(accepted)" if it succeeded.
+template <class F>
+std::string failureOf(F&& call) {
+  try {
+    call();
+  } catch (const ModuleFailedError& e) {
+    return e.what();
+  }
+  return "(accepted)";
+}
+
+void assertContains(const std::string& message, const std::string& part) {
+  CPPUNIT_ASSERT_MESSAGE("'" + part + "' not in: " + message, message.find(part) != std::string::npos);
+}
+
 std::string modelsFile() { return std::string(std::getenv("RGNAV_ROOT")) + "/config/gateways/gateway-hmms.txt"; }
 
 // `kernelFetch`: records the kernel asks from each input per call.
@@ -190,6 +205,30 @@ class RgMappingKernelIntegrationTest : public CppUnit::TestFixture {
     CPPUNIT_ASSERT_EQUAL(std::string("directory"), refusedField([&] { kernel.exportMap("../../out", "x", false); }));
     CPPUNIT_ASSERT_EQUAL(std::string("name"), refusedField([&] { kernel.exportMap("", "../x", false); }));
     CPPUNIT_ASSERT(!std::filesystem::exists(cluster.dir() + "/out"));
+    // Exporting over existing files replaces them; a file the kernel cannot write is an error
+    // that names the file and the cause, never a bare exception name.
+    CPPUNIT_ASSERT_EQUAL(files, kernel.exportMap("maps", "intel", true));
+    std::filesystem::create_directories(cluster.dir() + "/run/exports/maps/blocked.rgmap.json");
+    const std::string blocked = failureOf([&] { kernel.exportMap("maps", "blocked", false); });
+    assertContains(blocked, "RGMappingKernel.exportMap: ");
+    assertContains(blocked, "/run/exports/maps/blocked.rgmap.json");
+    assertContains(blocked, "Is a directory");
+
+    // A module that is not registered is reported within the first-contact budget, naming the
+    // name looked up and the naming service asked.
+    ClientSettings shortFirstContact = cluster.clientSettings();
+    shortFirstContact.firstContactBudget = std::chrono::milliseconds(300);
+    ClientConnection unbound("NoSuchModule", shortFirstContact);
+    try {
+      unbound.invoke("ping", Idempotence::Idempotent,
+                     [](CORBA::Object_ptr object, std::uint64_t) { object->_non_existent(); });
+      CPPUNIT_FAIL("NoSuchModule answered");
+    } catch (const ModuleUnavailableError& e) {
+      assertContains(e.what(), "NoSuchModule.ping: no answer within 300 ms from RGNav/" + shortFirstContact.robot +
+                                   "/NoSuchModule in the naming service at 127.0.0.1:" +
+                                   std::to_string(cluster.namingPort()));
+      assertContains(e.what(), "not bound");
+    }
 
     // Hostile arguments are typed answers naming the field, and the kernel stays up.
     const double nan = std::nan("");

@@ -18,6 +18,7 @@
 #include "tools/cat/RecordFormat.h"
 #include "tools/common/CommandLine.h"
 #include "tools/common/StrictArguments.h"
+#include "tools/common/ToolClient.h"
 
 namespace po = boost::program_options;
 
@@ -96,14 +97,12 @@ int main(int argc, char** argv) {
       ("record", po::value(&options.record)->default_value(""), "also write every record to this file")
       ("poll-ms", rgnav::strictOption(&options.pollMs, "--poll-ms")->default_value("20"), "wait between empty requests")
       ("retry-budget-ms", rgnav::strictOption(&options.retryBudgetMs, "--retry-budget-ms")->default_value("15000"),
-       "give up on a module after this");
+       "give up on a module that stops answering after this (one never reached: after 1.5 s)");
   po::positional_options_description positional;
   positional.add("stream", 1);
   try {
     if (!rgnav::parseCommandLine(argc, argv, desc, positional)) return 0;
-    rgnav::ClientSettings settings = rgnav::ClientSettings::fromEnvironment();
-    if (!naming.empty()) settings.setNaming(naming);
-    if (!robot.empty()) settings.robot = robot;
+    rgnav::ClientSettings settings = rgnav::toolClientSettings(naming, robot);
     settings.retryBudget = std::chrono::milliseconds(options.retryBudgetMs);
     settings.consumer = consumer;
     if (options.stream == "laser") {
@@ -142,6 +141,8 @@ int main(int argc, char** argv) {
                                       "' (laser, odometry, corrected or gateways)");
   } catch (const po::error& e) {
     std::cerr << "rgnav-cat: " << e.what() << "\n" << desc << std::endl;
+  } catch (const rgnav::ModuleUnavailableError& e) {
+    rgnav::reportUnreachable("rgnav-cat", e, true);
   } catch (const std::exception& e) {
     std::cerr << "rgnav-cat: " << e.what() << std::endl;
   }

@@ -12,6 +12,7 @@
 #include "clientlibs/watchdog/WatchdogClient.h"
 #include "tools/common/CommandLine.h"
 #include "tools/common/StrictArguments.h"
+#include "tools/common/ToolClient.h"
 #include "tools/ctl/WatchdogReach.h"
 #include "watchdog/ProcStat.h"
 #include "watchdog/SetLeftovers.h"
@@ -171,6 +172,8 @@ int main(int argc, char** argv) {
     settings.namingPort = set.naming.port;
     settings.retryBudget = command == "wait-running" ? std::chrono::milliseconds(static_cast<long>(timeout * 1000))
                                                      : kCallBudget;
+    // wait-running waits for a watchdog that may still be starting; the rest answer at once.
+    if (command != "wait-running") settings.firstContactBudget = rgnav::kToolFirstContactBudget;
     rgnav::WatchdogClient watchdog({set.host, set.watchdog.port}, settings);
     if (command == "wait-running") return waitRunning(set, expected, watchdog, timeout) ? 0 : 1;
     if (const std::string why = unreachable(set, expected); !why.empty()) {
@@ -194,6 +197,8 @@ int main(int argc, char** argv) {
     return 0;
   } catch (const po::error& e) {
     std::cerr << "rgnav-ctl: " << e.what() << "\n" << desc << std::endl;
+  } catch (const rgnav::ModuleUnavailableError& e) {
+    rgnav::reportUnreachable("rgnav-ctl", e, false);
   } catch (const std::exception& e) {
     std::cerr << "rgnav-ctl: " << e.what() << std::endl;
   }

@@ -25,6 +25,7 @@
 #include "tools/common/CommandLine.h"
 #include "tools/common/QuotedText.h"
 #include "tools/common/StrictArguments.h"
+#include "tools/common/ToolClient.h"
 #include "tools/rgmap/LogCompleteness.h"
 
 namespace po = boost::program_options;
@@ -132,9 +133,7 @@ int main(int argc, char** argv) {
   positional.add("command", 1).add("args", -1);
   try {
     if (!parseCommandLine(argc, argv, desc, positional)) return 0;
-    ClientSettings settings = ClientSettings::fromEnvironment();
-    if (!naming.empty()) settings.setNaming(naming);
-    if (!robot.empty()) settings.robot = robot;
+    ClientSettings settings = toolClientSettings(naming, robot);
     settings.retryBudget = std::chrono::seconds(30);
     RgMappingKernelClient kernel(settings);
     const auto want = [&](std::size_t n) {
@@ -183,6 +182,8 @@ int main(int argc, char** argv) {
     return 0;
   } catch (const po::error& e) {
     std::cerr << "rgnav-rgmap: " << e.what() << "\n" << desc << std::endl;
+  } catch (const ModuleUnavailableError& e) {
+    reportUnreachable("rgnav-rgmap", e, true);
   } catch (const std::exception& e) {
     std::cerr << "rgnav-rgmap: " << e.what() << std::endl;
   }
