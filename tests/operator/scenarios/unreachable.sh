@@ -32,11 +32,10 @@ sed -e "s|port: 12859|port: $naming|; s|port: 12860|port: $watchdog|" \
     -e "s|port: 12861|port: ${ports[0]}|; s|port: 12862|port: ${ports[1]}|" \
     -e "s|port: 12863|port: ${ports[2]}|; s|port: 12864|port: ${ports[3]}|" \
     -e "s|\"@LOG@\"|\"$SHARED/data/laser/corrected/intel-corrected.log.gz\"|; s|\"@OUT@\"|\"$WORK/out\"|" \
-    "$ROOT/config/sets/templates/map.yaml" >"$WORK/set.yaml"
-echo "run_dir: \"$WORK/run\"" >>"$WORK/set.yaml"
+    -e "s|\"@RUN_DIR@\"|\"$WORK/run\"|" "$ROOT/config/sets/templates/map.yaml" >"$WORK/set.yaml"
 # A watchdog (rgnav-ctl) that is not up yet is named by its address, at once.
 run "$BIN/rgnav-ctl" --set "$WORK/set.yaml" restart ScanMapper
-expect_refusal "corbaloc::127\.0\.0\.1:$watchdog/Watchdog"
+expect_refusal "127\.0\.0\.1:$watchdog"
 export RGNAV_BIN="$BIN" RGNAV_ROOT="$ROOT"
 setsid "$BIN/rgnav-watchdog" --set "$WORK/set.yaml" </dev/null >"$WORK/watchdog.log" 2>&1 &
 set_watchdog=$!
