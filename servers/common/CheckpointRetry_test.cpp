@@ -3,25 +3,12 @@
 // backoff that doubles up to its bound, and the first success makes the module healthy again.
 #include <cppunit/extensions/HelperMacros.h>
 
-#include <memory>
-
 #include "servers/common/CheckpointRetry.h"
+#include "tests/support/ManualClock.h"
 
 using namespace rgnav;
 using std::chrono::milliseconds;
-
-namespace {
-
-struct ManualClock {
-  std::shared_ptr<std::chrono::steady_clock::time_point> now =
-      std::make_shared<std::chrono::steady_clock::time_point>();
-  CheckpointRetry::Clock clock() const {
-    return [t = now] { return *t; };
-  }
-  void advance(milliseconds d) const { *now += d; }
-};
-
-}  // namespace
+using testing::ManualClock;
 
 class CheckpointRetryTest : public CppUnit::TestFixture {
   CPPUNIT_TEST_SUITE(CheckpointRetryTest);

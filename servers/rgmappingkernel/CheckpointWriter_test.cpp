@@ -90,92 +90,87 @@ class CheckpointWriterTest : public CppUnit::TestFixture {
   CPPUNIT_TEST_SUITE_END();
 
  public:
+  void setUp() override { health_.setState(ModuleRunState::Running); }
+
   void handingOverNeverWaitsForAWrite() {
-    FakeDisk disk;
-    ModuleHealth health;
-    CheckpointWriter writer(disk.files(), health, 3);
-    disk.hold();
+    CheckpointWriter writer(disk_.files(), health_, 3);
+    disk_.hold();
     writer.submit("s1\n", "map1", 4);
-    disk.waitInside();  // the first write is under way and cannot end
+    disk_.waitInside();  // the first write is under way and cannot end
     writer.submit("s2\n", "map2", 5);
     writer.submit("s3\n", "map3", 6);
     CPPUNIT_ASSERT_EQUAL(std::uint64_t{3}, writer.durableRevision());
-    disk.release();
+    disk_.release();
     writer.flush();
-    CPPUNIT_ASSERT_EQUAL(std::string("s1\ns2\ns3\n"), disk.journal);
-    CPPUNIT_ASSERT_EQUAL(std::size_t{2}, disk.maps.size());  // map2 was superseded while waiting
-    CPPUNIT_ASSERT_EQUAL(std::string("map3"), disk.maps.back());
+    CPPUNIT_ASSERT_EQUAL(std::string("s1\ns2\ns3\n"), disk_.journal);
+    CPPUNIT_ASSERT_EQUAL(std::size_t{2}, disk_.maps.size());  // map2 was superseded while waiting
+    CPPUNIT_ASSERT_EQUAL(std::string("map3"), disk_.maps.back());
     CPPUNIT_ASSERT_EQUAL(std::uint64_t{6}, writer.durableRevision());
   }
 
   void aFailedAppendKeepsItsJournalLines() {
-    FakeDisk disk;
-    ModuleHealth health;
-    health.setState(ModuleRunState::Running);
-    CheckpointWriter writer(disk.files(), health, 0, hours(1), hours(1));
-    disk.journalFailures = 1;
+    CheckpointWriter writer(disk_.files(), health_, 0, kNoRetry, kNoRetry);
+    disk_.journalFailures = 1;
     writer.submit("s1\n", "map1", 1);
     writer.flush();
-    CPPUNIT_ASSERT(health.snapshot().state == ModuleRunState::Degraded);
+    CPPUNIT_ASSERT(health_.snapshot().state == ModuleRunState::Degraded);
     CPPUNIT_ASSERT_EQUAL(std::uint64_t{0}, writer.durableRevision());
-    CPPUNIT_ASSERT_EQUAL(0, disk.mapAttempts);  // no map without its scans in the journal
+    CPPUNIT_ASSERT_EQUAL(0, disk_.mapAttempts);  // no map without its scans in the journal
     writer.submit("s2\n", "map2", 2);
     writer.flush();
-    CPPUNIT_ASSERT_EQUAL(std::string("s1\ns2\n"), disk.journal);
-    CPPUNIT_ASSERT_EQUAL(std::string("map2"), disk.maps.back());
-    CPPUNIT_ASSERT(health.snapshot().state == ModuleRunState::Running);
-    CPPUNIT_ASSERT(health.snapshot().lastError.empty());
+    CPPUNIT_ASSERT_EQUAL(std::string("s1\ns2\n"), disk_.journal);
+    CPPUNIT_ASSERT_EQUAL(std::string("map2"), disk_.maps.back());
+    CPPUNIT_ASSERT(health_.snapshot().state == ModuleRunState::Running);
+    CPPUNIT_ASSERT(health_.snapshot().lastError.empty());
     CPPUNIT_ASSERT_EQUAL(std::uint64_t{2}, writer.durableRevision());
   }
 
   void failedMapWritesAppendEachLineOnce() {
-    FakeDisk disk;
-    ModuleHealth health;
-    CheckpointWriter writer(disk.files(), health, 0, hours(1), hours(1));
-    disk.mapFailures = 5;
+    CheckpointWriter writer(disk_.files(), health_, 0, kNoRetry, kNoRetry);
+    disk_.mapFailures = 5;
     std::string expected;
     for (int scan = 1; scan <= 6; ++scan) {
       expected += line(scan);
       writer.submit(line(scan), std::to_string(scan), scan);
       writer.flush();  // one attempt each: five fail, the sixth writes map 6
     }
-    CPPUNIT_ASSERT_EQUAL(6, disk.mapAttempts);
-    CPPUNIT_ASSERT_EQUAL(expected, disk.journal);
-    CPPUNIT_ASSERT_EQUAL(std::size_t{1}, disk.maps.size());
-    CPPUNIT_ASSERT_EQUAL(std::string("6"), disk.maps.front());
+    CPPUNIT_ASSERT_EQUAL(6, disk_.mapAttempts);
+    CPPUNIT_ASSERT_EQUAL(expected, disk_.journal);
+    CPPUNIT_ASSERT_EQUAL(std::size_t{1}, disk_.maps.size());
+    CPPUNIT_ASSERT_EQUAL(std::string("6"), disk_.maps.front());
     CPPUNIT_ASSERT_EQUAL(std::uint64_t{6}, writer.durableRevision());
   }
 
   void aFailureWaitsItsBackoff() {
-    FakeDisk disk;
-    ModuleHealth health;
-    health.setState(ModuleRunState::Running);
-    CheckpointWriter writer(disk.files(), health, 0, hours(1), hours(1));
-    disk.mapFailures = 1;
+    CheckpointWriter writer(disk_.files(), health_, 0, kNoRetry, kNoRetry);
+    disk_.mapFailures = 1;
     writer.submit("s1\n", "map1", 1);
     writer.flush();
     for (int scan = 2; scan <= 50; ++scan) writer.submit(line(scan), "map", scan);
     // A write under way would have to take the map; none starts before the backoff's end.
-    CPPUNIT_ASSERT_EQUAL(1, disk.read(&FakeDisk::mapAttempts));
-    const ModuleStatusInfo s = health.snapshot();
+    CPPUNIT_ASSERT_EQUAL(1, disk_.read(&FakeDisk::mapAttempts));
+    const ModuleStatusInfo s = health_.snapshot();
     CPPUNIT_ASSERT(s.state == ModuleRunState::Degraded);
     CPPUNIT_ASSERT_EQUAL(std::string("checkpoint: map: Read-only file system"), s.lastError);
     CPPUNIT_ASSERT_EQUAL(std::uint64_t{1}, s.counters.at("checkpoint_failures"));
   }
 
   void aFailureIsRetriedOnItsOwnUntilItSucceeds() {
-    FakeDisk disk;
-    ModuleHealth health;
-    health.setState(ModuleRunState::Running);
-    CheckpointWriter writer(disk.files(), health, 0, milliseconds(1), milliseconds(4));
-    disk.mapFailures = 3;
+    CheckpointWriter writer(disk_.files(), health_, 0, milliseconds(1), milliseconds(4));
+    disk_.mapFailures = 3;
     writer.submit("s1\n", "map1", 1);  // nothing else is handed over: the writer retries alone
     testing::waitUntil([&] { return writer.durableRevision() == 1; }, "the retried checkpoint");
-    CPPUNIT_ASSERT_EQUAL(4, disk.read(&FakeDisk::mapAttempts));
-    CPPUNIT_ASSERT_EQUAL(std::string("s1\n"), disk.read(&FakeDisk::journal));
-    CPPUNIT_ASSERT(health.snapshot().state == ModuleRunState::Running);
-    CPPUNIT_ASSERT_EQUAL(std::uint64_t{3}, health.snapshot().counters.at("checkpoint_failures"));
+    CPPUNIT_ASSERT_EQUAL(4, disk_.read(&FakeDisk::mapAttempts));
+    CPPUNIT_ASSERT_EQUAL(std::string("s1\n"), disk_.read(&FakeDisk::journal));
+    CPPUNIT_ASSERT(health_.snapshot().state == ModuleRunState::Running);
+    CPPUNIT_ASSERT_EQUAL(std::uint64_t{3}, health_.snapshot().counters.at("checkpoint_failures"));
   }
+ private:
+  // A backoff that outlasts the test: after a failure only flush() makes the next attempt.
+  static constexpr hours kNoRetry{1};
+
+  FakeDisk disk_;
+  ModuleHealth health_;
 };
 
 CPPUNIT_TEST_SUITE_REGISTRATION(CheckpointWriterTest);
