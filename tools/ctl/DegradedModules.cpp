@@ -2,6 +2,7 @@
 #include "tools/ctl/DegradedModules.h"
 
 #include <algorithm>
+#include <future>
 
 #include "clientlibs/common/ModuleClient.h"
 #include "core/common/Errors.h"
@@ -12,13 +13,21 @@ std::map<std::string, std::string> degradedModules(const SetConfig& set, ClientS
                                                    const std::vector<ModuleProcessInfo>& modules) {
   settings.callTimeout = settings.connectTimeout = std::chrono::milliseconds(300);
   settings.retryBudget = std::chrono::milliseconds(0);
-  std::map<std::string, std::string> degraded;
+  // All at once, so that modules slow to answer do not add up.
+  std::map<std::string, std::future<ModuleStatusInfo>> asked;
   for (const ModuleSpec& spec : set.modules) {
     const auto info = std::find_if(modules.begin(), modules.end(), [&](const auto& m) { return m.name == spec.name; });
     if (info == modules.end() || info->state != ProcessState::Running || spec.objects.empty()) continue;
+    asked[spec.name] = std::async(std::launch::async, [&settings, endpoint = HostPort{set.host, spec.port},
+                                                       object = spec.objects.front()] {
+      return ModuleClient(object, settings, endpoint).status();
+    });
+  }
+  std::map<std::string, std::string> degraded;
+  for (auto& [name, status] : asked) {
     try {
-      const ModuleStatusInfo status = ModuleClient(spec.objects.front(), settings, HostPort{set.host, spec.port}).status();
-      if (status.state == ModuleRunState::Degraded) degraded[spec.name] = status.lastError;
+      const ModuleStatusInfo s = status.get();
+      if (s.state == ModuleRunState::Degraded) degraded[name] = s.lastError;
     } catch (const Error&) {
       // Not answering now: the watchdog's pings judge that.
     }

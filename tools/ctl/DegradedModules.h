@@ -2,8 +2,8 @@
 // it RUNNING; a module that lives but cannot do all of its job (e.g. cannot write its
 // checkpoints) says so in its own status(): MODULE_DEGRADED with the reason as lastError
 // (Module.idl). For each module the watchdog reports RUNNING this asks its status() directly at
-// <set host>:<port>/<first object>, briefly; one that does not answer at once is left as the
-// watchdog sees it.
+// <set host>:<port>/<first object>, all at once and briefly; one that does not answer at once is
+// left as the watchdog sees it.
 #pragma once
 
 #include <map>
