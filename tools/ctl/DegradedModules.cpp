@@ -13,6 +13,7 @@ std::map<std::string, std::string> degradedModules(const SetConfig& set, ClientS
                                                    const std::vector<ModuleProcessInfo>& modules) {
   settings.callTimeout = settings.connectTimeout = std::chrono::milliseconds(300);
   settings.retryBudget = std::chrono::milliseconds(0);
+  settings.firstContactBudget.reset();  // one try, also at first contact
   // All at once, so that modules slow to answer do not add up.
   std::map<std::string, std::future<ModuleStatusInfo>> asked;
   for (const ModuleSpec& spec : set.modules) {
