@@ -81,9 +81,22 @@ void writeFileAtomically(const std::string& path, const std::string& content) {
 void appendToFileDurably(const std::string& path, const std::string& content) {
   const int fd = ::open(path.c_str(), O_WRONLY | O_CREAT | O_APPEND | O_CLOEXEC | O_NOFOLLOW, kFileMode);
   if (fd < 0) throw FileError(path + ": cannot open for appending: " + std::strerror(errno));
+  struct stat before {};
+  if (::fstat(fd, &before) != 0) {
+    const int err = errno;
+    ::close(fd);
+    throw FileError(path + ": cannot stat: " + std::strerror(err));
+  }
   const char* step = "";
-  if (const int err = writeAllAndSync(fd, content, step); err != 0)
+  if (const int err = writeAllAndSync(fd, content, step); err != 0) {
+    // A part of `content` may have been written (a full disk, a file size limit): cut it off, so
+    // that appending the whole content again later does not leave a broken line inside the file.
+    if (const int again = ::open(path.c_str(), O_WRONLY | O_CLOEXEC | O_NOFOLLOW); again >= 0) {
+      if (::ftruncate(again, before.st_size) == 0) ::fsync(again);
+      ::close(again);
+    }
     throw FileError(path + ": cannot " + step + ": " + std::strerror(err));
+  }
 }
 
 std::optional<std::string> readCheckpoint(const std::string& path) {

@@ -4,7 +4,8 @@
 // the directory). The one atomic write of the project: checkpoints, exports, the watchdog's state.
 // A symbolic link at `path` itself is replaced, not followed.
 // appendToFileDurably: adds to the end of a journal and fsyncs (a crash may leave a part of the
-// last append, which the journal's reader must ignore; a symbolic link is refused);
+// last append, which the journal's reader must ignore; an append that fails is cut off again, so
+// the caller may append the same content later; a symbolic link is refused);
 // readCheckpoint reads such a file back.
 #pragma once
 

@@ -1,10 +1,14 @@
 // Tests writeFileAtomically: the content replaces the old one, a stale temporary file of a
 // crashed writer does not stop the next write, a symbolic link at the path is replaced and its
-// target left alone, and a failed write keeps the old content and leaves no temporary file.
+// target left alone, and a failed write keeps the old content and leaves no temporary file; an
+// append that fails halfway (here at a file size limit) leaves the journal as it was, so that
+// appending the same lines again does not put a broken line inside it.
 #include <cppunit/extensions/HelperMacros.h>
 
+#include <sys/resource.h>
 #include <unistd.h>
 
+#include <csignal>
 #include <filesystem>
 
 #include "core/common/AtomicFile.h"
@@ -19,6 +23,7 @@ class AtomicFileTest : public CppUnit::TestFixture {
   CPPUNIT_TEST(aStaleTemporaryFileDoesNotStopTheWrite);
   CPPUNIT_TEST(aSymbolicLinkIsReplacedNotFollowed);
   CPPUNIT_TEST(aFailedWriteKeepsTheOldFile);
+  CPPUNIT_TEST(aFailedAppendLeavesTheJournalAsItWas);
   CPPUNIT_TEST_SUITE_END();
 
  public:
@@ -62,6 +67,27 @@ class AtomicFileTest : public CppUnit::TestFixture {
     CPPUNIT_ASSERT(fs::is_directory(taken / "inside"));
     CPPUNIT_ASSERT_EQUAL(std::size_t{1}, entries());
     CPPUNIT_ASSERT_THROW(writeFileAtomically((dir_ / "missing" / "state").string(), "x"), FileError);
+  }
+
+  void aFailedAppendLeavesTheJournalAsItWas() {
+    const std::string path = (dir_ / "journal").string(), lines(80, 'a');
+    appendToFileDurably(path, lines);
+    // Past 100 bytes writes fail (EFBIG, SIGXFSZ ignored): the next append gets 20 bytes in.
+    const auto previous = std::signal(SIGXFSZ, SIG_IGN);
+    rlimit limit{};
+    CPPUNIT_ASSERT_EQUAL(0, ::getrlimit(RLIMIT_FSIZE, &limit));
+    const rlimit small{100, limit.rlim_max};
+    CPPUNIT_ASSERT_EQUAL(0, ::setrlimit(RLIMIT_FSIZE, &small));
+    bool failed = false;
+    try {
+      appendToFileDurably(path, std::string(50, 'b'));
+    } catch (const FileError&) {
+      failed = true;
+    }
+    ::setrlimit(RLIMIT_FSIZE, &limit);
+    std::signal(SIGXFSZ, previous);
+    CPPUNIT_ASSERT(failed);
+    CPPUNIT_ASSERT_EQUAL(lines, readCheckpoint(path).value());
   }
 
  private:

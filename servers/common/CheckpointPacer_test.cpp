@@ -3,26 +3,13 @@
 // share of the time since; bad settings are refused.
 #include <cppunit/extensions/HelperMacros.h>
 
-#include <memory>
-
 #include "core/common/Errors.h"
 #include "servers/common/CheckpointPacer.h"
+#include "tests/support/ManualClock.h"
 
 using namespace rgnav;
 using std::chrono::milliseconds;
-
-namespace {
-
-struct ManualClock {
-  std::shared_ptr<std::chrono::steady_clock::time_point> now =
-      std::make_shared<std::chrono::steady_clock::time_point>();
-  CheckpointPacer::Clock clock() const {
-    return [t = now] { return *t; };
-  }
-  void advance(milliseconds d) const { *now += d; }
-};
-
-}  // namespace
+using testing::ManualClock;
 
 class CheckpointPacerTest : public CppUnit::TestFixture {
   CPPUNIT_TEST_SUITE(CheckpointPacerTest);

@@ -3,6 +3,8 @@
 
 #include <unistd.h>
 
+#include <algorithm>
+
 namespace rgnav {
 
 ModuleHealth::ModuleHealth() { status_.pid = static_cast<std::uint32_t>(::getpid()); }
@@ -27,10 +29,19 @@ void ModuleHealth::set(const std::string& counter, std::uint64_t value) {
   status_.counters[counter] = value;
 }
 
+void ModuleHealth::record(const std::string& source, const std::string& message, bool degrades) {
+  Error& entry = errors_[source];
+  if (entry.message != message || entry.degrades != degrades) entry = {++errorOrder_, message, degrades};
+}
+
 void ModuleHealth::setError(const std::string& source, const std::string& message) {
   std::lock_guard lock(mutex_);
-  auto& entry = errors_[source];
-  if (entry.second != message) entry = {++errorOrder_, message};
+  record(source, message, false);
+}
+
+void ModuleHealth::setDegraded(const std::string& source, const std::string& reason) {
+  std::lock_guard lock(mutex_);
+  record(source, reason, true);
 }
 
 void ModuleHealth::clearError(const std::string& source) {
@@ -53,11 +64,13 @@ ModuleStatusInfo ModuleHealth::snapshot() {
   std::lock_guard lock(mutex_);
   ModuleStatusInfo copy = status_;
   copy.uptimeSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - started_).count();
+  const bool degraded = std::any_of(errors_.begin(), errors_.end(), [](const auto& e) { return e.second.degrades; });
+  if (degraded && copy.state == ModuleRunState::Running) copy.state = ModuleRunState::Degraded;
   std::uint64_t newest = 0;
   for (const auto& [source, entry] : errors_)
-    if (entry.first > newest) {
-      newest = entry.first;
-      copy.lastError = source + ": " + entry.second;
+    if (entry.order > newest && (entry.degrades || !degraded)) {
+      newest = entry.order;
+      copy.lastError = source + ": " + entry.message;
     }
   return copy;
 }

@@ -30,6 +30,7 @@ GatewayDetectionService::GatewayDetectionService(const GatewayDetectorConfig& co
       health_(health),
       events_(options_.eventCapacity),
       pacer_(options_.checkpointIntervalS),
+      retry_(health),
       follower_(health, "laser", [this] { return followOnce(); }, [this] { return skipFailingScan(); }) {
   DetectionCheckpoint saved = loadCheckpoint(options_.checkpointFile);
   for (GatewayEvent& e : saved.events) events_.push(std::move(e));
@@ -47,7 +48,10 @@ bool GatewayDetectionService::followOnce() {
   DataId last;
   {
     std::lock_guard lock(mutex_);
-    if (finished_) return false;
+    if (finished_) {
+      if (retry_.failing() && retry_.due()) checkpoint();  // the final checkpoint is still owed
+      return false;
+    }
     last = std::max(detector_->lastScan(), skipScan_);  // a skipped last scan counts as processed
   }
   const DataBatch<LaserScan> batch = laser_.scansSince(last, options_.fetchBatch);
@@ -71,7 +75,7 @@ bool GatewayDetectionService::followOnce() {
     }
     health_.add("scans_processed");
   }
-  if (pacer_.due()) checkpoint();
+  if (pacer_.due() && retry_.due()) checkpoint();
   return true;
 }
 
@@ -89,9 +93,9 @@ void GatewayDetectionService::checkpoint() {
     const std::vector<GatewayEvent> events(events_.records().begin(), events_.records().end());
     writeFileAtomically(options_.checkpointFile, serializeDetection({detector_->state(), events}));
     pacer_.written(began);
-    health_.clearError("checkpoint");
+    retry_.succeeded();
   } catch (const FileError& e) {
-    health_.setError("checkpoint", e.what());
+    retry_.failed(e.what());
   }
 }
 

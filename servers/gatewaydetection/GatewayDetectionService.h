@@ -2,7 +2,8 @@
 // follows the Laser module's raw scans by ID ("the GDM continuously acquires raw laser
 // readings"), runs the GatewayDetector on every scan, keeps the buffer of gateway events for
 // consumers and checkpoints detector and buffer atomically at most once per checkpointIntervalS
-// (less often as they grow) while detecting and at the end (CheckpointPacer.h). After a restart
+// (less often as they grow) while detecting and at the end (CheckpointPacer.h); one that cannot
+// be written degrades the module and is retried with backoff (CheckpointRetry.h). After a restart
 // it reloads the checkpoint and goes on after the last scan it holds, so events keep their IDs
 // and nothing is lost: the scans it sees again give the same events under the same IDs.
 // Where we differ: gateways are tracked in the odometry frame of the scans, not with the
@@ -22,6 +23,7 @@
 #include "core/common/DataBuffer.h"
 #include "core/gateways/detection/GatewayDetector.h"
 #include "servers/common/CheckpointPacer.h"
+#include "servers/common/CheckpointRetry.h"
 #include "servers/common/InputFollower.h"
 
 namespace rgnav {
@@ -65,6 +67,7 @@ class GatewayDetectionService {
   std::unique_ptr<GatewayDetector> detector_;
   DataBuffer<GatewayEvent> events_;
   CheckpointPacer pacer_;
+  CheckpointRetry retry_;  // after a failed checkpoint
   bool finished_ = false;
   DataId processing_ = 0;  // the scan being detected in
   DataId skipScan_ = 0;    // the scan left out

@@ -33,10 +33,8 @@ RgMappingKernelService::RgMappingKernelService(const RgMappingKernelConfig& conf
       detection_(settings, detectionObject),
       health_(health),
       kernel_(std::make_unique<RgMappingKernel>(config, loadCheckpoint(options_.checkpointFile))),
-      writer_([file = options_.checkpointFile](const std::string& journal, const std::string& map) {
-                if (!journal.empty()) appendToFileDurably(journalOf(file), journal);
-                writeFileAtomically(file, map);
-              },
+      writer_({[file = journalOf(options_.checkpointFile)](const std::string& lines) { appendToFileDurably(file, lines); },
+               [file = options_.checkpointFile](const std::string& map) { writeFileAtomically(file, map); }},
               health, kernel_->state().lastPoseRevision),
       feed_(*kernel_, mutex_, scanMapper_, detection_, options_.fetchBatch,
             [this] {

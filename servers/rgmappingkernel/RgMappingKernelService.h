@@ -12,7 +12,8 @@
 // that changed its structure, after every name or merge, at least every `checkpointScans` scans,
 // and at the end, with the scans' laser data in a journal beside it (`checkpointFile`.scans,
 // RgMapCodec.h): each checkpoint appends the new scans to the journal, then replaces the map. The
-// files are written by a thread of their own (CheckpointWriter.h), so no call waits for them.
+// files are written by a thread of their own (CheckpointWriter.h), so no call waits for them; one
+// that cannot be written degrades the module and is retried with backoff.
 // After a restart it resumes after the last scan, event and pose revision the checkpoint holds.
 // Names and merges carry request IDs and act once per ID (RequestLog.h).
 #pragma once

@@ -45,6 +45,7 @@ ScanMapperService::ScanMapperService(const SlamConfig& config, const ClientSetti
       mapper_(config, loadCheckpoint(options_.checkpointFile)),
       followers_(options_.revisionFollowers),
       pacer_(options_.checkpointIntervalS),
+      retry_(health),
       scans_(options_.bufferCapacity),
       follower_(health, "laser", [this] { return step(); }, [this] { return skipFailingScan(); }) {
   health_.set("resumed_after_scan", mapper_.lastInputId());
@@ -96,7 +97,10 @@ bool ScanMapperService::followOnce() {
   DataId last;
   {
     std::lock_guard lock(mutex_);
-    if (finished_) return false;
+    if (finished_) {
+      if (retry_.failing() && retry_.due()) checkpoint();  // the final checkpoint is still owed
+      return false;
+    }
     last = mapper_.lastInputId();
   }
   const auto batch = laser_.scansSince(last, options_.fetchBatch);
@@ -121,7 +125,7 @@ bool ScanMapperService::followOnce() {
     health_.add("loop_constraints", outcome.loopsAdded);
   }
   std::lock_guard lock(mutex_);
-  if (pacer_.due()) checkpoint();
+  if (pacer_.due() && retry_.due()) checkpoint();
   return true;
 }
 
@@ -138,9 +142,9 @@ void ScanMapperService::checkpoint() {
     const auto began = pacer_.now();
     writeFileAtomically(options_.checkpointFile, serializeState(mapper_.state()));
     pacer_.written(began);
-    health_.clearError("checkpoint");
+    retry_.succeeded();
   } catch (const FileError& e) {
-    health_.setError("checkpoint", e.what());
+    retry_.failed(e.what());
   }
 }
 

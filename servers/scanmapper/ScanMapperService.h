@@ -3,7 +3,8 @@
 // scans it served for consumers (with their poses as mapped, and the poses of the revisions its
 // followers may still need: ScanMapper.idl, RevisionFollowers.h), and checkpoints the SLAM state
 // atomically at most once per checkpointIntervalS (less often as it grows) while mapping and at
-// the end (DESIGN.md "State survives"; CheckpointPacer.h).
+// the end (DESIGN.md "State survives"; CheckpointPacer.h). A checkpoint that cannot be written
+// degrades the module and is retried with backoff, also after the end (CheckpointRetry.h).
 // After a restart it reloads the checkpoint, refills its scan buffer from the Laser module and
 // goes on after the last scan the checkpoint holds: the mapper continues bit for bit as if it had
 // not stopped, so no scan is lost, and the scans it maps again give the same corrected scans
@@ -20,6 +21,7 @@
 #include "core/common/DataBuffer.h"
 #include "core/slam/ScanMapper.h"
 #include "servers/common/CheckpointPacer.h"
+#include "servers/common/CheckpointRetry.h"
 #include "servers/common/InputFollower.h"
 #include "servers/scanmapper/RevisionFollowers.h"
 
@@ -78,6 +80,7 @@ class ScanMapperService {
   ScanMapper mapper_;
   RevisionFollowers followers_;
   CheckpointPacer pacer_;
+  CheckpointRetry retry_;  // after a failed checkpoint
   DataBuffer<LaserScan> scans_;
   bool finished_ = false;  // the input ended and the final optimisation ran
   bool refilled_ = false;

@@ -1,4 +1,5 @@
-// rgnav-ctl: talks to the watchdog of a server set: status table, waiting until every module
+// rgnav-ctl: talks to the watchdog of a server set: status table (where a running module reports
+// itself degraded, DEGRADED with its reason: DegradedModules.h), waiting until every module
 // runs, operator stop/start/restart of one module, the event log, and shutdown of the set. It
 // first checks from /proc that the watchdog can answer (WatchdogReach.h), so a set that is not
 // up, a stopped watchdog or a port clash is said at once. Without a watchdog it finds the set's
@@ -13,6 +14,7 @@
 #include "tools/common/CommandLine.h"
 #include "tools/common/StrictArguments.h"
 #include "tools/common/ToolClient.h"
+#include "tools/ctl/DegradedModules.h"
 #include "tools/ctl/WatchdogReach.h"
 #include "watchdog/ProcStat.h"
 #include "watchdog/SetLeftovers.h"
@@ -26,11 +28,17 @@ constexpr std::uint32_t kEventBatch = 500;  // events asked per call (the watchd
 constexpr auto kCallBudget = std::chrono::milliseconds(2000);  // a watchdog that runs answers at once
 constexpr int kNotReachable = 3;  // exit code: the watchdog cannot answer (not up, stopped, clash)
 
-void printStatus(const std::vector<rgnav::ModuleProcessInfo>& modules) {
+// A degraded module (DegradedModules.h) shows DEGRADED with its reason as its last event.
+void printStatus(const std::vector<rgnav::ModuleProcessInfo>& modules,
+                 const std::map<std::string, std::string>& degraded = {}) {
   std::printf("%-18s %-9s %8s %10s %8s  %s\n", "MODULE", "STATE", "PID", "UPTIME_S", "RESTARTS", "LAST EVENT");
-  for (const auto& m : modules)
-    std::printf("%-18s %-9s %8lld %10.1f %8u  %s\n", m.name.c_str(), rgnav::toString(m.state),
-                static_cast<long long>(m.pid), m.uptimeSeconds, m.restarts, m.lastEvent.c_str());
+  for (const auto& m : modules) {
+    const auto reason = degraded.find(m.name);
+    const bool isDegraded = reason != degraded.end();
+    std::printf("%-18s %-9s %8lld %10.1f %8u  %s\n", m.name.c_str(), isDegraded ? "DEGRADED" : rgnav::toString(m.state),
+                static_cast<long long>(m.pid), m.uptimeSeconds, m.restarts,
+                (isDegraded ? reason->second : m.lastEvent).c_str());
+  }
 }
 
 // The modules a watchdog that is gone left running, as the state file names them.
@@ -180,7 +188,10 @@ int main(int argc, char** argv) {
       std::cerr << "rgnav-ctl: " << why << std::endl;
       return kNotReachable;
     }
-    if (command == "status") printStatus(watchdog.modules());
+    if (command == "status") {
+      const auto modules = watchdog.modules();
+      printStatus(modules, rgnav::degradedModules(set, settings, modules));
+    }
     else if (command == "stop") watchdog.stopModule(module);
     else if (command == "start") watchdog.startModule(module);
     else if (command == "restart") watchdog.restartModule(module);
