@@ -44,6 +44,7 @@ struct Options {
 };
 
 const char* const kUntouched = "not to be written by an export\n";
+constexpr int kHangSeconds = 10;
 
 // Symbolic links in the export root that point out of it, and the file they lead to.
 struct Traps {
@@ -119,11 +120,15 @@ int main(int argc, char** argv) {
 
     HostileTally tally;
     std::atomic<bool> stop{false};
+    // A call unanswered after kHangSeconds counts as a hung server. Not the tools' 2 s: a whole-map
+    // export (one of the hostile calls succeeds as one) takes seconds on a loaded machine, and the
+    // calls queued behind it wait as long.
+    ClientSettings hostile = cluster.clientSettings();
+    hostile.callTimeout = std::chrono::seconds(kHangSeconds);
     std::vector<std::thread> clients;
     for (unsigned i = 0; i < options.threads; ++i)
       clients.emplace_back([&, i] {
-        HostileClient client(cluster.clientSettings(), HostPort{"127.0.0.1", cluster.watchdogPort()}, traps.names,
-                             simulator, i);
+        HostileClient client(hostile, HostPort{"127.0.0.1", cluster.watchdogPort()}, traps.names, simulator, i);
         while (!stop) {
           client.callNext(tally);
           std::this_thread::sleep_for(std::chrono::milliseconds(options.paceMs));
