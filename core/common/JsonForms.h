@@ -47,17 +47,16 @@ class JsonInteger {
 
 inline JsonInteger integerFrom(const nlohmann::json& j) { return JsonInteger(j); }
 
-// An ID is written as its integer and read back from a non-negative JSON integer (nlohmann::json
-// finds both through argument-dependent lookup); integerFrom reads it too.
+// An ID is written as its integer and read back through integerFrom, like every integer
+// (nlohmann::json finds both through argument-dependent lookup).
 template <class Json, class Concept>
 void to_json(Json& j, const TypedId<Concept>& id) {
   j = id.value();
 }
 
-template <class Json, class Concept>
-void from_json(const Json& j, TypedId<Concept>& id) {
-  if (!j.is_number_unsigned()) throw FormatError("<checkpoint>", 0, "not an ID: " + j.dump());
-  id = TypedId<Concept>(j.template get<std::uint64_t>());
+template <class Concept>
+void from_json(const nlohmann::json& j, TypedId<Concept>& id) {
+  id = integerFrom(j);
 }
 
 // A JSON array of integers into a vector, set or std::array of integers (an array's size must match).
