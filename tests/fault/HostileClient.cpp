@@ -32,7 +32,7 @@ void release(const T&) {}
 template <class Iface, class F>
 void add(std::vector<HostileCall>& calls, TypedConnection<Iface>& connection, std::string what, F f,
          Idempotence idempotence = Idempotence::Idempotent) {
-  const std::string operation = what;
+  const std::string operation = what.substr(what.find('.') + 1);  // the connection names the object
   calls.push_back({std::move(what), [&connection, operation, f, idempotence] {
                      connection.call(
                          operation.c_str(),
