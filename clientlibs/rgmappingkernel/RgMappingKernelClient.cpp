@@ -107,6 +107,11 @@ RegionId RgMappingKernelClient::mergeRegions(RegionId a, RegionId b, bool force)
                           [&](Kernel k) { return RegionId(k->mergeRegions(request, a.value(), b.value(), force)); });
 }
 
+void RgMappingKernelClient::reportDoorState(GatewayId door, bool traversable, std::uint64_t request) {
+  const RequestId id = request != 0 ? request : newRequestId();
+  connection_.call("reportDoorState", [&](Kernel k) { k->reportDoorState(id, door.value(), traversable); });
+}
+
 RgMapEventBatch RgMappingKernelClient::eventsSince(RgMapEventId afterId, std::uint32_t maxCount) {
   return connection_.call("eventsSince", [&](Kernel k) {
     RGNav::RgMapEventBatch_var b = k->eventsSince(afterId, maxCount, consumer_.c_str());

@@ -1,5 +1,5 @@
 // RgMappingKernelClient: the RG Map of the RGMappingKernel module: regions with descriptions,
-// gateways, the RG graph and paths, names and merges, the map's events by ID, export. Names and
+// gateways, the RG graph and paths, names, merges and door states, the map's events by ID, export. Names and
 // merges are not idempotent: each call carries a new random request ID, kept over its retries,
 // so that the kernel acts on it once however often a lost answer makes the client ask
 // (RGMappingKernel.idl). Errors: BadArgumentError naming the field, NotAvailableError,
@@ -34,6 +34,10 @@ class RgMappingKernelClient : public ModuleClientOf<RGNav::RGMappingKernel> {
   RgMappingKernel::NamedObject objectByName(const std::string& name);
   // Regions that share no gateway are refused (InvalidArgumentError) unless `force`.
   RegionId mergeRegions(RegionId a, RegionId b, bool force = false);
+  // The door of gateway `door` was found open (traversable) or blocked (thesis 5.4). `request` 0
+  // makes a new request ID; a module that relays a request of its own passes that ID on, so that
+  // the kernel acts once however often the relayed request is retried.
+  void reportDoorState(GatewayId door, bool traversable, std::uint64_t request = 0);
   RgMapEventBatch eventsSince(RgMapEventId afterId, std::uint32_t maxCount);
   // The files written, one per line; `directory` is relative to the kernel's export root (""
   // for the root) or absolute inside it (RGMappingKernel.idl). Describing and drawing a large map takes long (an outdoor

@@ -6,14 +6,11 @@
 #include "core/common/Errors.h"
 
 namespace rgnav {
-namespace {
 
-RGNav::RgNode node(const GraphNodeView& n) {
+RGNav::RgNode toIdl(const GraphNodeView& n) {
   return RGNav::RgNode{n.gateway.value(), static_cast<CORBA::ULong>(n.side), n.region.value(), toIdl(n.position)};
 }
-GraphNodeView node(const RGNav::RgNode& n) { return {GatewayId(n.gateway), n.side, RegionId(n.region), fromIdl(n.position)}; }
-
-}  // namespace
+GraphNodeView fromIdl(const RGNav::RgNode& n) { return {GatewayId(n.gateway), n.side, RegionId(n.region), fromIdl(n.position)}; }
 
 RGNav::RegionSummary toIdl(const RegionSummaryView& s) {
   RGNav::RegionSummary out;
@@ -112,7 +109,7 @@ GatewayView fromIdl(const RGNav::RgGateway& g) {
 
 RGNav::RgGraphInfo toIdl(const GraphView& graph) {
   RGNav::RgGraphInfo out;
-  out.nodes = toIdlSeq<RGNav::RgNodeSeq>(graph.nodes, [](const GraphNodeView& n) { return node(n); });
+  out.nodes = toIdlSeq<RGNav::RgNodeSeq>(graph.nodes, [](const GraphNodeView& n) { return toIdl(n); });
   out.edges = toIdlSeq<RGNav::RgEdgeSeq>(graph.edges, [](const GraphEdgeView& e) {
     return RGNav::RgEdge{static_cast<CORBA::ULong>(e.from), static_cast<CORBA::ULong>(e.to), e.throughGateway(),
                          e.throughGateway() ? e.gateway.value() : e.region.value(), e.lengthM, e.costM};
@@ -122,7 +119,7 @@ RGNav::RgGraphInfo toIdl(const GraphView& graph) {
 
 GraphView fromIdl(const RGNav::RgGraphInfo& graph) {
   GraphView out;
-  out.nodes = fromIdlSeq<std::vector<GraphNodeView>>(graph.nodes, [](const RGNav::RgNode& n) { return node(n); });
+  out.nodes = fromIdlSeq<std::vector<GraphNodeView>>(graph.nodes, [](const RGNav::RgNode& n) { return fromIdl(n); });
   out.edges = fromIdlSeq<std::vector<GraphEdgeView>>(graph.edges, [](const RGNav::RgEdge& e) {
     return e.throughGateway ? GraphEdgeView{e.from, e.to, GatewayId(e.through), RegionId{}, e.length, e.cost}
                             : GraphEdgeView{e.from, e.to, GatewayId{}, RegionId(e.through), e.length, e.cost};
@@ -132,14 +129,14 @@ GraphView fromIdl(const RGNav::RgGraphInfo& graph) {
 
 RGNav::RgPath toIdl(const PathView& path) {
   RGNav::RgPath out;
-  out.crossings = toIdlSeq<RGNav::RgNodeSeq>(path.crossings, [](const GraphNodeView& n) { return node(n); });
+  out.crossings = toIdlSeq<RGNav::RgNodeSeq>(path.crossings, [](const GraphNodeView& n) { return toIdl(n); });
   out.cost = path.costM;
   out.length = path.lengthM;
   return out;
 }
 
 PathView fromIdl(const RGNav::RgPath& path) {
-  return {fromIdlSeq<std::vector<GraphNodeView>>(path.crossings, [](const RGNav::RgNode& n) { return node(n); }),
+  return {fromIdlSeq<std::vector<GraphNodeView>>(path.crossings, [](const RGNav::RgNode& n) { return fromIdl(n); }),
           path.cost, path.length};
 }
 

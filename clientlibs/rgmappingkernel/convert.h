@@ -14,6 +14,8 @@ RGNav::NamedObject toIdl(const RgMappingKernel::NamedObject& object);
 RgMappingKernel::NamedObject fromIdl(const RGNav::NamedObject& object);
 RGNav::RgGateway toIdl(const GatewayView& gateway);
 GatewayView fromIdl(const RGNav::RgGateway& gateway);
+RGNav::RgNode toIdl(const GraphNodeView& node);
+GraphNodeView fromIdl(const RGNav::RgNode& node);
 RGNav::RgGraphInfo toIdl(const GraphView& graph);
 GraphView fromIdl(const RGNav::RgGraphInfo& graph);
 RGNav::RgPath toIdl(const PathView& path);

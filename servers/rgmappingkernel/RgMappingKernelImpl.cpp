@@ -98,6 +98,15 @@ RGNav::RegionId RgMappingKernelImpl::mergeRegions(RGNav::RequestId requestId, RG
   });
 }
 
+void RgMappingKernelImpl::reportDoorState(RGNav::RequestId requestId, RGNav::GatewayId door,
+                                          CORBA::Boolean traversable) {
+  serve(kArgs, [&] {
+    wire::requireId(requestId, "requestId");
+    wire::requireId(door, "door");
+    service_.reportDoorState(requestId, GatewayId(door), traversable);
+  });
+}
+
 RGNav::RgMapEventBatch* RgMappingKernelImpl::eventsSince(RGNav::RgMapEventId afterId, CORBA::ULong maxCount,
                                                          const char* consumer) {
   return serve(kArgs, [&] {

@@ -180,6 +180,14 @@ RegionId RgMappingKernelService::mergeRegions(std::uint64_t requestId, RegionId 
   return merged;
 }
 
+void RgMappingKernelService::reportDoorState(std::uint64_t requestId, GatewayId door, bool traversable) {
+  std::lock_guard lock(mutex_);
+  if (requests_.answered(requestId)) return;
+  kernel_->recordDoorState(door, traversable);
+  requests_.record(requestId, 0);
+  checkpoint();
+}
+
 MapExportData RgMappingKernelService::exportData(bool occupancy) {
   std::lock_guard lock(mutex_);
   return exportDataOf(*kernel_, occupancy);

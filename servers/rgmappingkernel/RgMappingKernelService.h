@@ -15,7 +15,7 @@
 // files are written by a thread of their own (CheckpointWriter.h), so no call waits for them; one
 // that cannot be written degrades the module and is retried with backoff.
 // After a restart it resumes after the last scan, event and pose revision the checkpoint holds.
-// Names and merges carry request IDs and act once per ID (RequestLog.h).
+// Names, merges and door states carry request IDs and act once per ID (RequestLog.h).
 #pragma once
 
 #include <mutex>
@@ -64,6 +64,8 @@ class RgMappingKernelService {
   // Throws NotAvailableError if no object has the name.
   RgMappingKernel::NamedObject objectByName(const std::string& name);
   RegionId mergeRegions(std::uint64_t requestId, RegionId a, RegionId b, bool force);
+  // A door found open or blocked (RgMappingKernel::recordDoorState), once per requestId.
+  void reportDoorState(std::uint64_t requestId, GatewayId door, bool traversable);
   RgMapEventBatch eventsSince(RgMapEventId afterId, std::size_t maxCount);
   // What an export writes, taken under the lock (the files are written outside it).
   MapExportData exportData(bool occupancy);

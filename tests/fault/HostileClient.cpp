@@ -196,6 +196,9 @@ void HostileClient::addKernelCalls(const ExportTraps& traps) {
       [this](K k) { return k->mergeRegions(requestId(), 1, kHugeId, false); }, once);
   add(c, kernel_, "RGMappingKernel.mergeRegions(0)", [this](K k) { return k->mergeRegions(requestId(), 0, 1, false); }, once);
   add(c, kernel_, "RGMappingKernel.mergeRegions(request 0)", [](K k) { return k->mergeRegions(0, 1, 2, false); }, once);
+  add(c, kernel_, "RGMappingKernel.reportDoorState(unknown)",
+      [this](K k) { k->reportDoorState(requestId(), kHugeId, false); }, once);
+  add(c, kernel_, "RGMappingKernel.reportDoorState(0)", [this](K k) { k->reportDoorState(requestId(), 0, false); }, once);
   add(c, kernel_, "RGMappingKernel.eventsSince(huge)",
       [](K k) { return k->eventsSince(kHugeId, kHugeCount, kOverlong.c_str()); });
   add(c, kernel_, "RGMappingKernel.eventsSince(control)", [](K k) { return k->eventsSince(0, 0, kControl); });

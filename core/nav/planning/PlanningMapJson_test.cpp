@@ -1,0 +1,110 @@
+// An RG map exported to JSON (RgMapJson.h) and read back into a PlanningMap equals what the kernel
+// serves of it (RgMapViews.h) up to the export's rounding: every region with its frame, lines,
+// freespace bits and named objects, the map's gateways, the graph's nodes and edges with their
+// costs, and the revision. Files of another format or version, or with an edge naming an unknown
+// node, are FormatErrors naming the source.
+#include <cppunit/extensions/HelperMacros.h>
+
+#include <nlohmann/json.hpp>
+
+#include "core/common/Errors.h"
+#include "core/nav/planning/PlanningMapJson.h"
+#include "core/rgmap/export/RgMapJson.h"
+#include "core/rgmap/export/testing/ExportedFloor.h"
+#include "core/rgmap/kernel/RgMapViews.h"
+#include "core/rgmap/kernel/testing/SyntheticTour.h"
+
+using namespace rgnav;
+
+namespace {
+
+constexpr double kMm = 0.0005 + 1e-9;  // the export rounds positions to 1 mm
+constexpr double kAngle = 0.00005 + 1e-9;
+
+bool near(const Eigen::Vector2d& a, const Eigen::Vector2d& b) { return (a - b).cwiseAbs().maxCoeff() <= kMm; }
+
+}  // namespace
+
+class PlanningMapJsonTest : public CppUnit::TestFixture {
+  CPPUNIT_TEST_SUITE(PlanningMapJsonTest);
+  CPPUNIT_TEST(exportedMapReadsBack);
+  CPPUNIT_TEST(otherFilesAreRefused);
+  CPPUNIT_TEST_SUITE_END();
+
+ public:
+  void exportedMapReadsBack() {
+    RgMappingKernel kernel = testing::twoRoomMap();
+    const RegionId room1 = kernel.state().regions.begin()->first;
+    kernel.nameRegion(room1, "hall");
+    const PlanningMap map = planningMapFromJson(exportRgMapJson(snapshotOf(kernel)), "two-room");
+    CPPUNIT_ASSERT_EQUAL(kernel.state().regions.size(), map.regions.size());
+    for (const RegionView& read : map.regions) {
+      const RegionView served = regionView(kernel, read.summary.id);
+      CPPUNIT_ASSERT_EQUAL(served.summary.name, read.summary.name);
+      CPPUNIT_ASSERT(served.summary.gateways == read.summary.gateways);
+      CPPUNIT_ASSERT_EQUAL(served.summary.scans, read.summary.scans);
+      CPPUNIT_ASSERT(near({served.summary.frame.x, served.summary.frame.y}, {read.summary.frame.x, read.summary.frame.y}));
+      CPPUNIT_ASSERT_DOUBLES_EQUAL(served.summary.frame.theta, read.summary.frame.theta, kAngle);
+      CPPUNIT_ASSERT_EQUAL(served.lines.size(), read.lines.size());
+      CPPUNIT_ASSERT(!read.lines.empty());
+      for (std::size_t i = 0; i < read.lines.size(); ++i)
+        CPPUNIT_ASSERT(near(served.lines[i].a, read.lines[i].a) && near(served.lines[i].b, read.lines[i].b));
+      CPPUNIT_ASSERT(served.freespace.bytes == read.freespace.bytes);
+      CPPUNIT_ASSERT_EQUAL(served.freespace.width, read.freespace.width);
+      CPPUNIT_ASSERT_EQUAL(served.freespace.height, read.freespace.height);
+      CPPUNIT_ASSERT(near(served.freespace.originM, read.freespace.originM));
+      CPPUNIT_ASSERT(near(served.centroid, read.centroid));
+      CPPUNIT_ASSERT_EQUAL(served.objects.size(), read.objects.size());
+      for (std::size_t i = 0; i < read.objects.size(); ++i) CPPUNIT_ASSERT_EQUAL(served.objects[i].name, read.objects[i].name);
+    }
+    CPPUNIT_ASSERT_EQUAL(std::string("hall"), map.regions.front().summary.name);
+    std::vector<GatewayView> inMap;
+    for (const GatewayView& g : gatewayViews(kernel))
+      if (!g.sideA.isNone() || !g.sideB.isNone()) inMap.push_back(g);
+    CPPUNIT_ASSERT_EQUAL(inMap.size(), map.gateways.size());
+    CPPUNIT_ASSERT(!inMap.empty());
+    for (std::size_t i = 0; i < inMap.size(); ++i) {
+      CPPUNIT_ASSERT(inMap[i].id == map.gateways[i].id);
+      CPPUNIT_ASSERT_EQUAL(inMap[i].door, map.gateways[i].door);
+      CPPUNIT_ASSERT(inMap[i].sideA == map.gateways[i].sideA && inMap[i].sideB == map.gateways[i].sideB);
+      CPPUNIT_ASSERT_EQUAL(inMap[i].crossingPoints.size(), map.gateways[i].crossingPoints.size());
+      for (std::size_t k = 0; k < inMap[i].crossingPoints.size(); ++k)
+        CPPUNIT_ASSERT(near(inMap[i].crossingPoints[k], map.gateways[i].crossingPoints[k]));
+    }
+    const GraphView graph = graphView(kernel.graph());
+    CPPUNIT_ASSERT_EQUAL(graph.nodes.size(), map.graph.nodes.size());
+    CPPUNIT_ASSERT_EQUAL(graph.edges.size(), map.graph.edges.size());
+    CPPUNIT_ASSERT(!graph.edges.empty());
+    for (std::size_t i = 0; i < graph.nodes.size(); ++i) {
+      CPPUNIT_ASSERT(graph.nodes[i].gateway == map.graph.nodes[i].gateway);
+      CPPUNIT_ASSERT_EQUAL(graph.nodes[i].side, map.graph.nodes[i].side);
+      CPPUNIT_ASSERT(graph.nodes[i].region == map.graph.nodes[i].region);
+      CPPUNIT_ASSERT(near(graph.nodes[i].position, map.graph.nodes[i].position));
+    }
+    for (std::size_t i = 0; i < graph.edges.size(); ++i) {
+      const GraphEdgeView &a = graph.edges[i], &b = map.graph.edges[i];
+      CPPUNIT_ASSERT(a.from == b.from && a.to == b.to && a.gateway == b.gateway && a.region == b.region);
+      CPPUNIT_ASSERT_DOUBLES_EQUAL(a.costM, b.costM, kMm);
+    }
+    CPPUNIT_ASSERT_EQUAL(kernel.state().events.back().id, map.revision);
+  }
+
+  void otherFilesAreRefused() {
+    const std::string text = exportRgMapJson(snapshotOf(testing::twoRoomMap()));
+    nlohmann::json j = nlohmann::json::parse(text);
+    j["version"] = 1;
+    CPPUNIT_ASSERT_THROW(planningMapFromJson(j.dump(), "old"), FormatError);
+    j = nlohmann::json::parse(text);
+    j["graph"]["edges"][0]["from"] = "G99A";
+    try {
+      planningMapFromJson(j.dump(), "broken.rgmap.json");
+      CPPUNIT_FAIL("an edge naming an unknown node was accepted");
+    } catch (const FormatError& e) {
+      CPPUNIT_ASSERT(std::string(e.what()).find("broken.rgmap.json") == 0);
+      CPPUNIT_ASSERT(std::string(e.what()).find("G99A") != std::string::npos);
+    }
+    CPPUNIT_ASSERT_THROW(planningMapFromJson("{", "cut"), FormatError);
+  }
+};
+
+CPPUNIT_TEST_SUITE_REGISTRATION(PlanningMapJsonTest);
