@@ -18,7 +18,7 @@
 #include "core/nav/planning/RoutePlanner.h"
 #include "servers/common/CheckpointRetry.h"
 #include "servers/common/ModuleHealth.h"
-#include "servers/pathplanning/KernelMapCache.h"
+#include "clientlibs/pathplanning/KernelMapCache.h"
 #include "servers/pathplanning/PlanStore.h"
 
 namespace rgnav {

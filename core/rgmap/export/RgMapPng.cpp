@@ -1,6 +1,8 @@
 // The RG Map as a PNG picture; see RgMapPng.h.
 #include "core/rgmap/export/RgMapPng.h"
 
+#include <algorithm>
+#include <cmath>
 #include <opencv2/core.hpp>
 
 #include "core/raster/ImageFile.h"
@@ -41,9 +43,17 @@ void paintGateway(MapCanvas& canvas, const GatewaySnapshot& s) {
   for (const Eigen::Vector2d& p : s.inMap.crossingPoints) canvas.disc(p, kCrossingRadiusPixels, kCrossingColour);
 }
 
+void paintOverlay(MapCanvas& canvas, const MapPolyline& line) {
+  const int width = std::max(1, static_cast<int>(std::lround(line.widthM / canvas.resolutionM())));
+  for (std::size_t k = 1; k < line.points.size(); ++k) canvas.line(line.points[k - 1], line.points[k], line.colour, width);
+  const int radius = static_cast<int>(std::lround(line.markerRadiusM / canvas.resolutionM()));
+  if (line.markerRadiusM > 0.0)
+    for (const Eigen::Vector2d& p : line.points) canvas.disc(p, std::max(1, radius), line.colour);
+}
+
 }  // namespace
 
-cv::Mat renderRgMap(const RgMapSnapshot& map, double resolutionM) {
+cv::Mat renderRgMap(const RgMapSnapshot& map, double resolutionM, const std::vector<MapPolyline>& overlays) {
   MapCanvas canvas(pictureExtent(map), resolutionM, kBackgroundColour);
   for (const RegionSnapshot& r : map.regions) paintFreespace(canvas, r);
   for (const RgEdge& e : map.graphEdges)
@@ -53,11 +63,13 @@ cv::Mat renderRgMap(const RgMapSnapshot& map, double resolutionM) {
   for (const GatewaySnapshot& g : map.gateways) paintGateway(canvas, g);
   for (const RegionSnapshot& r : map.regions)
     canvas.number(r.labelPosition(), r.region.id.value(), kDigitScale, kLabelLiftPixels, kLabelColour);
+  for (const MapPolyline& line : overlays) paintOverlay(canvas, line);
   return canvas.image();
 }
 
-void exportRgMapPng(const std::string& path, const RgMapSnapshot& map, double resolutionM) {
-  writeImage(path, renderRgMap(map, resolutionM));
+void exportRgMapPng(const std::string& path, const RgMapSnapshot& map, double resolutionM,
+                    const std::vector<MapPolyline>& overlays) {
+  writeImage(path, renderRgMap(map, resolutionM, overlays));
 }
 
 }  // namespace rgnav

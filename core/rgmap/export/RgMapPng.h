@@ -13,15 +13,17 @@
 #include <opencv2/core.hpp>
 #include <string>
 
+#include "core/rgmap/export/MapOverlay.h"
 #include "core/rgmap/export/RgMapSnapshot.h"
 
 namespace rgnav {
 
 // Throws InvalidArgumentError for a non-positive resolution or a picture wider or taller than
-// MapCanvas::kMaxSidePixels. CV_8UC3, BGR.
-cv::Mat renderRgMap(const RgMapSnapshot& map, double resolutionM = 0.05);
+// MapCanvas::kMaxSidePixels. CV_8UC3, BGR. `overlays` are drawn last.
+cv::Mat renderRgMap(const RgMapSnapshot& map, double resolutionM = 0.05, const std::vector<MapPolyline>& overlays = {});
 
-// Writes renderRgMap(map, resolutionM) atomically; throws FileError naming the path.
-void exportRgMapPng(const std::string& path, const RgMapSnapshot& map, double resolutionM = 0.05);
+// Writes renderRgMap(map, resolutionM, overlays) atomically; throws FileError naming the path.
+void exportRgMapPng(const std::string& path, const RgMapSnapshot& map, double resolutionM = 0.05,
+                    const std::vector<MapPolyline>& overlays = {});
 
 }  // namespace rgnav

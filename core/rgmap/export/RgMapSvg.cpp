@@ -150,9 +150,21 @@ std::string scaleBar(const Eigen::AlignedBox2d& extent) {
          ">" + decimalText(length, 1) + " m</text>\n</g>\n";
 }
 
+std::string overlay(const MapPolyline& line) {
+  std::string points;
+  for (const Eigen::Vector2d& p : line.points) append(points, {points.empty() ? "" : " ", x(p.x()), ",", y(p.y())});
+  std::string out = "<g" + attr("class", escaped(line.cssClass)) + ">\n<polyline fill=\"none\"" + attr("points", points) +
+                    attr("stroke", hexColour(line.colour)) + attr("stroke-width", num(line.widthM)) + "/>\n";
+  if (line.markerRadiusM > 0.0)
+    for (const Eigen::Vector2d& p : line.points)
+      out += "<circle" + attr("cx", x(p.x())) + attr("cy", y(p.y())) + attr("r", num(line.markerRadiusM)) +
+             attr("fill", hexColour(line.colour)) + "/>\n";
+  return out + "</g>\n";
+}
+
 }  // namespace
 
-std::string exportRgMapSvg(const RgMapSnapshot& map) {
+std::string exportRgMapSvg(const RgMapSnapshot& map, const std::vector<MapPolyline>& overlays) {
   const Eigen::AlignedBox2d extent = pictureExtent(map);
   const Eigen::Vector2d size = extent.sizes();
   std::string out = "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n<svg xmlns=\"http://www.w3.org/2000/svg\"" +
@@ -170,11 +182,12 @@ std::string exportRgMapSvg(const RgMapSnapshot& map) {
   out += graph(map);
   for (const GatewaySnapshot& g : map.gateways) out += gateway(g);
   for (const RegionSnapshot& r : map.regions) out += regionLabel(r);
+  for (const MapPolyline& line : overlays) out += overlay(line);
   return out + scaleBar(extent) + "</svg>\n";
 }
 
-void writeRgMapSvg(const std::string& path, const RgMapSnapshot& map) {
-  writeFileAtomically(path, exportRgMapSvg(map));
+void writeRgMapSvg(const std::string& path, const RgMapSnapshot& map, const std::vector<MapPolyline>& overlays) {
+  writeFileAtomically(path, exportRgMapSvg(map, overlays));
 }
 
 }  // namespace rgnav

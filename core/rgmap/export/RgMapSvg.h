@@ -18,15 +18,17 @@
 
 #include <string>
 
+#include "core/rgmap/export/MapOverlay.h"
 #include "core/rgmap/export/RgMapSnapshot.h"
 
 namespace rgnav {
 
 inline constexpr double kSvgPixelsPerMetre = 40.0;
 
-std::string exportRgMapSvg(const RgMapSnapshot& map);
+// `overlays` are drawn last, each as a group of its class with a polyline and its markers.
+std::string exportRgMapSvg(const RgMapSnapshot& map, const std::vector<MapPolyline>& overlays = {});
 
-// Writes exportRgMapSvg(map) atomically (AtomicFile.h); throws FileError naming the path.
-void writeRgMapSvg(const std::string& path, const RgMapSnapshot& map);
+// Writes exportRgMapSvg(map, overlays) atomically (AtomicFile.h); throws FileError naming the path.
+void writeRgMapSvg(const std::string& path, const RgMapSnapshot& map, const std::vector<MapPolyline>& overlays = {});
 
 }  // namespace rgnav

@@ -1,7 +1,7 @@
 // Which regions the PathPlanning module fetches again after RG map events (RegionChanges.h).
 #include <cppunit/extensions/HelperMacros.h>
 
-#include "servers/pathplanning/RegionChanges.h"
+#include "clientlibs/pathplanning/RegionChanges.h"
 
 using namespace rgnav;
 

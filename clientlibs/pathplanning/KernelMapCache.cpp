@@ -1,7 +1,7 @@
 // The kernel's map, cached by revision (see KernelMapCache.h).
-#include "servers/pathplanning/KernelMapCache.h"
+#include "clientlibs/pathplanning/KernelMapCache.h"
 
-#include "servers/pathplanning/RegionChanges.h"
+#include "clientlibs/pathplanning/RegionChanges.h"
 
 namespace rgnav {
 namespace {

@@ -1,5 +1,5 @@
 // The regions an RG map's events may have changed (see RegionChanges.h).
-#include "servers/pathplanning/RegionChanges.h"
+#include "clientlibs/pathplanning/RegionChanges.h"
 
 namespace rgnav {
 

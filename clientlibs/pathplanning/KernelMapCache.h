@@ -1,6 +1,6 @@
-// KernelMapCache: the PathPlanning module's copy of the RG Mapping Kernel's map as a PlanningMap
-// (regions by ID with their line maps, freespace and objects; gateways; the RG graph with its
-// learned costs), fetched through the kernel's client library and cached by map revision, the
+// KernelMapCache: the RG Mapping Kernel's map as a PlanningMap, as the PathPlanning module and
+// rgnav-plan take it (regions by ID with their line maps, freespace and objects; gateways; the RG
+// graph with its learned costs), fetched through the kernel's client library and cached by map revision, the
 // kernel's last event ID (RgMapSummary.lastEvent). refresh() asks only for the summary while the
 // revision stays; when it changed, it fetches the region list, the gateways and the graph, and
 // again only the regions that are new, whose summary changed, or that an event since the cached
