@@ -1,0 +1,78 @@
+// FramedQuadtreePlanner: region path planning of thesis 5.4 — A* over the graph of a FramedQuadtree
+// (figure 5.7 right), optional node costs that keep the path away from walls (figure 5.8 right),
+// then smoothing (figure 5.8 left). Points are in cell units (SegmentVisibility.h) and every
+// straight move obeys segmentFree(), the collision model all planners of this library share.
+// Graph: a node's neighbours are the other frame cells of its quad (a straight segment inside a
+// free square, any direction) and its 8 neighbouring cells in other quads; start and goal join as
+// temporary nodes linked to the frame of their quad (and to each other when they share one).
+// Smoothing: greedy string pulling (drop intermediate points while the shortcut stays free), then
+// bends moved from cell centres onto the obstacle corners they wrap around while that shortens the
+// path. Every step only shortens the graph's optimum, which is never longer than the octile
+// optimum (a run of octile moves inside a free quad is no shorter than the straight segment
+// between its ends), so neither is the returned path.
+// Differs from the thesis: start and goal are joined to their quad's whole frame instead of being
+// moved to cell centres afterwards, and the bends snap to obstacle corners.
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <mutex>
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "core/nav/planning/FramedQuadtree.h"
+#include "core/raster/OccupancyGrid.h"
+
+namespace rgnav {
+
+struct FramedQuadtreePlannerConfig {
+  double wallCostDistanceM = 0.0;  // node cost falls linearly from wallCostWeight at an obstacle to 0 at this distance (metres, via grid.resolution()); 0 turns wall costs off
+  double wallCostWeight = 1.0;     // extra cost per metre of path at distance 0 (>= 0)
+};
+// Throws ConfigError for negative or non-finite values.
+void validate(const FramedQuadtreePlannerConfig&);
+
+struct CellUnitPath {                   // points in cell units (SegmentVisibility.h)
+  std::vector<Eigen::Vector2d> points;  // start first (exactly the start given), goal last (exactly the goal given)
+  double length = 0.0;                  // Euclidean length of the polyline, cell units
+  std::size_t expansions = 0;           // search nodes expanded
+};
+
+class FramedQuadtreePlanner {
+ public:
+  // Builds the framed quadtree of `grid` (which must outlive the planner) and, with wall costs on,
+  // its distance field. Throws ConfigError for an invalid config.
+  FramedQuadtreePlanner(const OccupancyGrid& grid, FramedQuadtreePlannerConfig config = {});
+  // Any start/goal point inside (or on the border of) a free cell, cell units. Throws
+  // StartBlockedError / GoalBlockedError (point not in a free cell) and NoPathError (not
+  // connected), with a message naming the point. Calls on one planner are serialised.
+  CellUnitPath plan(const Eigen::Vector2d& start, const Eigen::Vector2d& goal) const;
+  const FramedQuadtree& tree() const { return tree_; }
+
+ private:
+  struct NodeState {
+    double g = 0.0;
+    std::int32_t parent = -1;
+    std::uint32_t seen = 0;    // search stamp: g and parent are valid
+    std::uint32_t closed = 0;  // search stamp: expanded
+  };
+  struct Open {
+    double f;
+    double g;
+    std::int32_t node;
+  };
+
+  const OccupancyGrid& grid_;
+  FramedQuadtreePlannerConfig config_;
+  FramedQuadtree tree_;
+  std::vector<Eigen::Vector2d> nodeCentres_;  // per graph node
+  std::vector<float> nodeCost_;               // per graph node, extra cost per cell of path (empty: off)
+  std::vector<float> cellCost_;               // per cell, the same field for smoothing (empty: off)
+  mutable std::mutex mutex_;
+  mutable std::vector<NodeState> state_;  // graph nodes, then start and goal
+  mutable std::vector<Open> heap_;
+  mutable std::uint32_t search_ = 0;
+};
+
+}  // namespace rgnav
