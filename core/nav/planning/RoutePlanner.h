@@ -32,7 +32,8 @@ namespace rgnav {
 struct RoutePlannerConfig {
   double robotRadiusM = 0.25;
   double gridResolutionM = 0.05;
-  double startSnapM = 1.0;          // a start this close to a region's freespace is placed in it
+  double startSnapM = 1.0;          // a start this close to a region's free cells is placed in it
+  double crossingSnapM = 0.5;       // a crossing point in a blocked cell moves to the nearest free one
   double targetMinSpacingM = 0.5;   // intermediate targets (thesis 5.5.3)
   double targetMaxSpacingM = 2.0;
   FramedQuadtreePlannerConfig region{.wallCostDistanceM = 0.5, .wallCostWeight = 1.0};
@@ -87,9 +88,17 @@ class RoutePlanner {
   Plan plan(const Pose2D& start, const PlanGoal& goal) const;
 
  private:
+  struct RegionEntry;
+  struct Ends;
+  // The region's grid and planner, built on first use. Throws NoPathError for an unknown region.
+  RegionEntry& entry(RegionId region) const;
+  // The regions whose free cells hold `point` (map frame).
+  std::vector<RegionId> regionsAt(const Eigen::Vector2d& point) const;
+  Ends startOf(const Pose2D& start) const;
+  Ends goalOf(const PlanGoal& goal, const Eigen::Vector2d& start) const;
+
   RoutePlannerConfig config_;
   PlanningMap map_;
-  struct RegionEntry;
   mutable std::map<RegionId, std::shared_ptr<RegionEntry>> regions_;  // built on first use
 };
 

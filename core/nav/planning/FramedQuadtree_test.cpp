@@ -1,0 +1,112 @@
+// Tests the framed-quadtree decomposition: on random grids the quads cover exactly the free cells,
+// are disjoint, free and inside the grid, and the graph nodes are exactly the frame cells of the
+// quads with contiguous ids per quad; a free power-of-two grid is one quad, a blocked cell splits it.
+#include <cppunit/extensions/HelperMacros.h>
+
+#include <random>
+
+#include "core/nav/planning/FramedQuadtree.h"
+
+using rgnav::Cell;
+using rgnav::CellIndex;
+using rgnav::FramedQuadtree;
+using rgnav::OccupancyGrid;
+
+namespace {
+
+OccupancyGrid randomGrid(std::mt19937& rng, int width, int height, double blockedShare) {
+  OccupancyGrid grid(width, height, 1.0);
+  std::bernoulli_distribution blocked(blockedShare);
+  for (int r = 0; r < height; ++r)
+    for (int c = 0; c < width; ++c)
+      if (blocked(rng)) grid.set({c, r}, Cell::Occupied);
+  return grid;
+}
+
+bool onFrame(const FramedQuadtree::Quad& q, CellIndex c) {
+  return c.col == q.col || c.row == q.row || c.col == q.col + q.size - 1 || c.row == q.row + q.size - 1;
+}
+
+}  // namespace
+
+class FramedQuadtreeTest : public CppUnit::TestFixture {
+  CPPUNIT_TEST_SUITE(FramedQuadtreeTest);
+  CPPUNIT_TEST(quadsCoverExactlyTheFreeCells);
+  CPPUNIT_TEST(nodesAreTheFramesOfTheQuads);
+  CPPUNIT_TEST(aFreeSquareIsOneFramedQuad);
+  CPPUNIT_TEST(aBlockedCellSplitsTheSquare);
+  CPPUNIT_TEST_SUITE_END();
+
+ public:
+  void quadsCoverExactlyTheFreeCells() {
+    std::mt19937 rng(7);
+    for (int trial = 0; trial < 30; ++trial) {
+      const OccupancyGrid grid = randomGrid(rng, 5 + trial * 3, 40 - trial, trial % 3 == 0 ? 0.02 : 0.25);
+      const FramedQuadtree tree(grid);
+      std::vector<int> covered(grid.cells().size(), 0);
+      for (std::size_t q = 0; q < tree.quads().size(); ++q) {
+        const FramedQuadtree::Quad& quad = tree.quads()[q];
+        for (int r = quad.row; r < quad.row + quad.size; ++r)
+          for (int c = quad.col; c < quad.col + quad.size; ++c) {
+            CPPUNIT_ASSERT(grid.contains({c, r}));
+            CPPUNIT_ASSERT(!grid.blocked({c, r}));
+            CPPUNIT_ASSERT_EQUAL(static_cast<std::int32_t>(q), tree.quadOf({c, r}));
+            ++covered[static_cast<std::size_t>(r) * grid.width() + c];
+          }
+      }
+      std::size_t free = 0;
+      for (int r = 0; r < grid.height(); ++r)
+        for (int c = 0; c < grid.width(); ++c) {
+          const bool isFree = !grid.blocked({c, r});
+          free += isFree ? 1 : 0;
+          CPPUNIT_ASSERT_EQUAL(isFree ? 1 : 0, covered[static_cast<std::size_t>(r) * grid.width() + c]);
+          if (!isFree) CPPUNIT_ASSERT_EQUAL(FramedQuadtree::kNone, tree.quadOf({c, r}));
+        }
+      CPPUNIT_ASSERT_EQUAL(free, tree.freeCellCount());
+    }
+  }
+
+  void nodesAreTheFramesOfTheQuads() {
+    std::mt19937 rng(11);
+    for (int trial = 0; trial < 20; ++trial) {
+      const OccupancyGrid grid = randomGrid(rng, 37, 29, 0.03 * trial);
+      const FramedQuadtree tree(grid);
+      std::size_t expected = 0;
+      for (std::size_t q = 0; q < tree.quads().size(); ++q) {
+        const FramedQuadtree::Quad& quad = tree.quads()[q];
+        CPPUNIT_ASSERT_EQUAL(quad.size == 1 ? 1 : 4 * quad.size - 4, quad.nodeCount);
+        expected += static_cast<std::size_t>(quad.nodeCount);
+        for (std::int32_t n = quad.firstNode; n < quad.firstNode + quad.nodeCount; ++n) {
+          CPPUNIT_ASSERT_EQUAL(static_cast<std::int32_t>(q), tree.nodeQuad(n));
+          CPPUNIT_ASSERT(onFrame(quad, tree.nodeCell(n)));
+          CPPUNIT_ASSERT_EQUAL(n, tree.nodeOf(tree.nodeCell(n)));
+        }
+        for (int r = quad.row; r < quad.row + quad.size; ++r)
+          for (int c = quad.col; c < quad.col + quad.size; ++c)
+            CPPUNIT_ASSERT_EQUAL(onFrame(quad, {c, r}), tree.nodeOf({c, r}) != FramedQuadtree::kNone);
+      }
+      CPPUNIT_ASSERT_EQUAL(expected, tree.nodeCount());
+    }
+  }
+
+  void aFreeSquareIsOneFramedQuad() {
+    const FramedQuadtree tree(OccupancyGrid(16, 16, 0.05));
+    CPPUNIT_ASSERT_EQUAL(std::size_t{1}, tree.quads().size());
+    CPPUNIT_ASSERT_EQUAL(16, tree.quads()[0].size);
+    CPPUNIT_ASSERT_EQUAL(std::size_t{60}, tree.nodeCount());
+    CPPUNIT_ASSERT_EQUAL(FramedQuadtree::kNone, tree.nodeOf({5, 7}));
+  }
+
+  void aBlockedCellSplitsTheSquare() {
+    OccupancyGrid grid(8, 8, 0.05);
+    grid.set({0, 0}, Cell::Occupied);
+    const FramedQuadtree tree(grid);
+    // Three 4x4 quads, and the lower-left 4x4 as three 2x2 and three 1x1 quads.
+    CPPUNIT_ASSERT_EQUAL(std::size_t{9}, tree.quads().size());
+    CPPUNIT_ASSERT_EQUAL(std::size_t{3 * 12 + 3 * 4 + 3}, tree.nodeCount());
+    CPPUNIT_ASSERT_EQUAL(FramedQuadtree::kNone, tree.quadOf({0, 0}));
+    CPPUNIT_ASSERT_EQUAL(4, tree.quads()[static_cast<std::size_t>(tree.quadOf({7, 7}))].size);
+  }
+};
+
+CPPUNIT_TEST_SUITE_REGISTRATION(FramedQuadtreeTest);
