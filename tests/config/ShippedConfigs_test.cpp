@@ -13,6 +13,7 @@
 #include "core/config/DescribedConfig.h"
 #include "core/gateways/classify/HmmModelFile.h"
 #include "core/gateways/detection/GatewayDetectorConfigYaml.h"
+#include "core/nav/planning/RoutePlannerConfigYaml.h"
 #include "core/rgmap/kernel/RgMappingKernelConfigYaml.h"
 #include "core/sim/LoadedWorld.h"
 #include "core/sim/SimulationConfigYaml.h"
@@ -44,7 +45,8 @@ const std::map<std::string, ModuleFile>& moduleFiles() {
   static const std::map<std::string, ModuleFile> files{
       {"scanmapper", moduleFile(&parseSlamConfig)},
       {"gatewaydetection", moduleFile(&parseGatewayDetectorConfig)},
-      {"rgmappingkernel", moduleFile(&parseRgMappingKernelConfig)}};
+      {"rgmappingkernel", moduleFile(&parseRgMappingKernelConfig)},
+      {"pathplanning", moduleFile(&parseRoutePlannerConfig)}};
   return files;
 }
 
