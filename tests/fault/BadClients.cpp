@@ -128,7 +128,8 @@ int main(int argc, char** argv) {
     std::vector<std::thread> clients;
     for (unsigned i = 0; i < options.threads; ++i)
       clients.emplace_back([&, i] {
-        HostileClient client(hostile, HostPort{"127.0.0.1", cluster.watchdogPort()}, traps.names, simulator, i);
+        HostileClient client(hostile, HostPort{"127.0.0.1", cluster.watchdogPort()}, traps.names, simulator,
+                             simulator, i);
         while (!stop) {
           client.callNext(tally);
           std::this_thread::sleep_for(std::chrono::milliseconds(options.paceMs));

@@ -59,13 +59,14 @@ std::vector<std::string> HostileTally::notes() const {
 }
 
 HostileClient::HostileClient(const ClientSettings& settings, const HostPort& watchdog, ExportTraps traps,
-                             bool groundTruth, unsigned seed)
+                             bool groundTruth, bool pathPlanning, unsigned seed)
     : laser_("Laser", settings),
       base_("Base", settings),
       groundTruth_("GroundTruth", settings),
       scanMapper_("ScanMapper", settings),
       detection_("GatewayDetection", settings),
       kernel_("RGMappingKernel", settings),
+      planning_("PathPlanning", settings),
       watchdog_("Watchdog", settings, watchdog),
       requests_(std::uint64_t(seed) << 32) {
   addSensorCalls();
@@ -73,6 +74,7 @@ HostileClient::HostileClient(const ClientSettings& settings, const HostPort& wat
   addScanMapperCalls();
   addDetectionCalls();
   addKernelCalls(traps);
+  if (pathPlanning) addPathPlanningCalls();
   addWatchdogCalls();
   next_ = seed % calls_.size();
 }
@@ -215,6 +217,43 @@ void HostileClient::addKernelCalls(const ExportTraps& traps) {
       [](K k) { return k->exportMap(kOverlong.c_str(), "badclients", false); }, once);
   add(c, kernel_, "RGMappingKernel.exportMap(control)", [](K k) { return k->exportMap(kControl, "badclients", false); },
       once);
+}
+
+// No call makes a plan (each is refused before planning, or finds none made), so none can end in
+// NoPath, and none reports a door.
+void HostileClient::addPathPlanningCalls() {
+  std::vector<HostileCall>& c = calls_;
+  using P = RGNav::PathPlanning_ptr;
+  constexpr auto once = Idempotence::NotIdempotent;
+  const RGNav::Pose2D origin{0.0, 0.0, 0.0}, nan{kNaN, 0.0, kInf};
+  const RGNav::PlanGoal point{RGNav::GOAL_POINT, {1.0, 1.0}, 0, ""};
+  add(c, planning_, "PathPlanning.ping", [](P p) { p->ping(); });
+  add(c, planning_, "PathPlanning.status", [](P p) { return p->status(); });
+  add(c, planning_, "PathPlanning.plan(NaN start)", [=, this](P p) { return p->plan(requestId(), nan, point); }, once);
+  add(c, planning_, "PathPlanning.plan(request 0)", [=](P p) { return p->plan(0, origin, point); }, once);
+  add(c, planning_, "PathPlanning.plan(inf goal)", [=, this](P p) {
+    return p->plan(requestId(), origin, RGNav::PlanGoal{RGNav::GOAL_POINT, {kInf, kNaN}, 0, ""});
+  }, once);
+  add(c, planning_, "PathPlanning.plan(region 0)", [=, this](P p) {
+    return p->plan(requestId(), origin, RGNav::PlanGoal{RGNav::GOAL_REGION, {0.0, 0.0}, 0, ""});
+  }, once);
+  add(c, planning_, "PathPlanning.plan(overlong name)", [=, this](P p) {
+    return p->plan(requestId(), origin, RGNav::PlanGoal{RGNav::GOAL_OBJECT, {0.0, 0.0}, 0, kOverlong.c_str()});
+  }, once);
+  add(c, planning_, "PathPlanning.plan(control name)", [=, this](P p) {
+    return p->plan(requestId(), origin, RGNav::PlanGoal{RGNav::GOAL_REGION_NAME, {0.0, 0.0}, 0, kControl});
+  }, once);
+  add(c, planning_, "PathPlanning.plan(empty name)", [=, this](P p) {
+    return p->plan(requestId(), origin, RGNav::PlanGoal{RGNav::GOAL_OBJECT, {0.0, 0.0}, 0, ""});
+  }, once);
+  add(c, planning_, "PathPlanning.lastPlan", [](P p) { return p->lastPlan(); });
+  add(c, planning_, "PathPlanning.planById(0)", [](P p) { return p->planById(0); });
+  add(c, planning_, "PathPlanning.planById(huge)", [](P p) { return p->planById(kHugeId); });
+  add(c, planning_, "PathPlanning.replanDoorBlocked(request 0)", [](P p) { return p->replanDoorBlocked(0, 1); }, once);
+  add(c, planning_, "PathPlanning.replanDoorBlocked(door 0)",
+      [this](P p) { return p->replanDoorBlocked(requestId(), 0); }, once);
+  add(c, planning_, "PathPlanning.replanDoorBlocked(no plan)",
+      [this](P p) { return p->replanDoorBlocked(requestId(), kHugeId); }, once);
 }
 
 void HostileClient::addWatchdogCalls() {

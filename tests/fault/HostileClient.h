@@ -1,6 +1,6 @@
 // HostileClient: a remote caller that calls every operation of every server of the mapping set
 // (the simulator's or a log playback's Laser and Base, the simulator's GroundTruth, ScanMapper,
-// GatewayDetection, the RG Mapping Kernel and the watchdog) with arguments no well-behaved client sends: NaN and infinite coordinates, IDs 0 and
+// GatewayDetection, the RG Mapping Kernel, the demo set's PathPlanning module and the watchdog) with arguments no well-behaved client sends: NaN and infinite coordinates, IDs 0 and
 // 2^64-1, counts of 2^32-1, names with control characters or over the length bound, request ID
 // 0, merges of a region with itself and with a region that does not exist, exports to /etc, to
 // a directory behind a symbolic link and over a symbolic link, and unknown watchdog modules.
@@ -20,6 +20,7 @@
 #include "GatewayDetection.hh"
 #include "GroundTruth.hh"
 #include "Laser.hh"
+#include "PathPlanning.hh"
 #include "RGMappingKernel.hh"
 #include "ScanMapper.hh"
 #include "Watchdog.hh"
@@ -59,9 +60,10 @@ class HostileClient {
  public:
   // One client per thread; `seed` sets where its request IDs and its turn through the calls start,
   // so that threads send the same calls at different times.
-  // groundTruth: the set has a simulator, whose GroundTruth object is called too.
+  // groundTruth: the set has a simulator, whose GroundTruth object is called too; pathPlanning:
+  // the set has the PathPlanning module (the demo set), called too.
   HostileClient(const ClientSettings& settings, const HostPort& watchdog, ExportTraps traps, bool groundTruth,
-                unsigned seed);
+                bool pathPlanning, unsigned seed);
   HostileClient(const HostileClient&) = delete;  // its calls refer to its connections
   HostileClient& operator=(const HostileClient&) = delete;
 
@@ -75,6 +77,7 @@ class HostileClient {
   void addScanMapperCalls();
   void addDetectionCalls();
   void addKernelCalls(const ExportTraps& traps);
+  void addPathPlanningCalls();
   void addWatchdogCalls();
   std::uint64_t requestId() { return ++requests_; }
 
@@ -84,6 +87,7 @@ class HostileClient {
   TypedConnection<RGNav::ScanMapper> scanMapper_;
   TypedConnection<RGNav::GatewayDetection> detection_;
   TypedConnection<RGNav::RGMappingKernel> kernel_;
+  TypedConnection<RGNav::PathPlanning> planning_;
   TypedConnection<RGNav::Watchdog> watchdog_;
   std::vector<HostileCall> calls_;
   std::size_t next_ = 0;

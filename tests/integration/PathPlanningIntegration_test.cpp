@@ -3,7 +3,8 @@
 // the last plan and by ID; a plan to a region by ID; typed NoPath for a goal outside every region
 // and for a start far from every region; bad arguments refused naming the field; and a door
 // reported blocked raises its learned cost in the kernel by the fixed length (thesis 5.4) and
-// gives a new plan.
+// gives a new plan. The module fetches each region from the kernel once while no event changes
+// it: neither a second plan on the same revision nor a learned door cost fetches any again.
 #include <cppunit/extensions/HelperMacros.h>
 
 #include <cmath>
@@ -69,6 +70,9 @@ class PathPlanningIntegrationTest : public CppUnit::TestFixture {
     CPPUNIT_ASSERT_EQUAL(std::string(), planDifference(first, planning.lastPlan()));
     CPPUNIT_ASSERT_EQUAL(std::string(), planDifference(first, planning.planById(1)));
 
+    const std::uint64_t regions = kernel.summary().regions;
+    CPPUNIT_ASSERT_EQUAL(regions, planning.status().counters.at("regions_fetched"));
+
     const PlanRecord byRegion = planning.plan(kHallway, PlanGoal::inRegion(first.plan.goalRegion));
     CPPUNIT_ASSERT_EQUAL(PlanId(2), byRegion.id);
     CPPUNIT_ASSERT(byRegion.plan.goalRegion == first.plan.goalRegion);
@@ -96,6 +100,9 @@ class PathPlanningIntegrationTest : public CppUnit::TestFixture {
     CPPUNIT_ASSERT(replanned.plan.mapRevision > byRegion.plan.mapRevision);
     CPPUNIT_ASSERT(replanned.plan.goalRegion == first.plan.goalRegion);
     CPPUNIT_ASSERT_DOUBLES_EQUAL(before + 30.0, doorCost(kernel, door), 1e-9);  // door_blocked_m
+    const ModuleStatusInfo status = planning.status();
+    CPPUNIT_ASSERT_EQUAL(regions, status.counters.at("regions_fetched"));
+    CPPUNIT_ASSERT_EQUAL(replanned.plan.mapRevision, status.counters.at("map_revision"));
   }
 };
 
