@@ -19,6 +19,18 @@ run "$BIN/rgnav-cat" laser --after -5
 expect_refusal "--after '-5' is not a whole number"
 run "$BIN/rgnav-cat" laser --batch 2x
 expect_refusal "--batch '2x' is not a whole number"
+run "$BIN/rgnav-plan" --from 1,2x --to 3,4
+expect_refusal "--from '2x' is not a number"
+run "$BIN/rgnav-plan" --from 1,2 --to 3,nan
+expect_refusal "--to 'nan' is not a finite number"
+run "$BIN/rgnav-plan" --from 1,2,3,4 --to 3,4
+expect_refusal "--from '1,2,3,4' is not x,y or x,y,theta"
+run "$BIN/rgnav-plan" --from 1,2 --to 3,4 --to-region 2
+expect_refusal "give exactly one goal"
+run "$BIN/rgnav-plan" --from 1,2 --to-region 0
+expect_refusal "--to-region '0' is not an ID"
+run "$BIN/rgnav-plan" --from 1,2 --to 3,4 --map "$WORK/no-such.rgmap.json"
+expect_refusal "no-such\.rgmap\.json: cannot be read"
 
 # rgctl: an unknown command and a map of a log that is not there (or is a directory) say so.
 run "$RGCTL" bogus

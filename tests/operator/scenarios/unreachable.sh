@@ -14,6 +14,8 @@ run env RGNAV_NAMING="127.0.0.1:$nowhere" "$BIN/rgnav-rgmap" export "" again
 expect_refusal "RGNav/tumbot/RGMappingKernel in the naming service at 127\.0\.0\.1:$nowhere"
 run "$BIN/rgnav-cat" laser --naming "127.0.0.1:$nowhere"
 expect_refusal "RGNav/tumbot/Laser in the naming service at 127\.0\.0\.1:$nowhere"
+run "$BIN/rgnav-plan" --naming "127.0.0.1:$nowhere" --from 1,1 --to 9,4
+expect_refusal "RGNav/tumbot/PathPlanning in the naming service at 127\.0\.0\.1:$nowhere"
 run env RGNAV_NAMING="127.0.0.1:$nowhere" RGNAV_ROBOT=scout "$BIN/rgnav-cat" gateways
 expect_refusal "RGNav/scout/GatewayDetection in the naming service at 127\.0\.0\.1:$nowhere"
 # An address that is no host:port is refused as such, not handed to the ORB to abort on.
