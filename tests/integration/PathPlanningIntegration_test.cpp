@@ -5,9 +5,15 @@
 // reported blocked raises its learned cost in the kernel by the fixed length (thesis 5.4) and
 // gives a new plan. The module fetches each region from the kernel once while no event changes
 // it: neither a second plan on the same revision nor a learned door cost fetches any again.
+// rgnav-plan plans through the module and offline on the kernel's exported map, both ending at
+// the goal, and draws the path into its SVG and PNG.
 #include <cppunit/extensions/HelperMacros.h>
 
+#include <sys/wait.h>
+
 #include <cmath>
+#include <filesystem>
+#include <fstream>
 #include <limits>
 
 #include "clientlibs/pathplanning/PathPlanningClient.h"
@@ -15,6 +21,8 @@
 #include "core/nav/grid/PlanningErrors.h"
 #include "core/nav/planning/testing/SamePlan.h"
 #include "tests/integration/PlanningSet.h"
+#include "tests/support/WaitUntil.h"
+#include "watchdog/Spawn.h"
 
 using namespace rgnav;
 using namespace rgnav::testing;
@@ -40,6 +48,27 @@ std::string noPathReason(F&& call) {
     return e.what();
   }
   return "(planned)";
+}
+
+// Runs rgnav-plan with `args` until it ends; its exit status and output (stdout and stderr).
+std::pair<int, std::string> runPlanTool(const std::vector<std::string>& args, const std::string& logFile) {
+  SpawnSpec spec;
+  spec.argv = {TestCluster::program("rgnav-plan")};
+  spec.argv.insert(spec.argv.end(), args.begin(), args.end());
+  spec.logFile = logFile;
+  spec.parentDeathSignal = SIGKILL;
+  const pid_t pid = spawnProcess(spec);
+  int status = 0;
+  try {
+    waitUntil([&] { return ::waitpid(pid, &status, WNOHANG) != 0; }, "rgnav-plan to end", std::chrono::seconds(60),
+              std::chrono::milliseconds(20));
+  } catch (...) {
+    discardChild(pid);
+    throw;
+  }
+  std::ifstream log(logFile);
+  return {WIFEXITED(status) ? WEXITSTATUS(status) : -1,
+          std::string(std::istreambuf_iterator<char>(log), std::istreambuf_iterator<char>())};
 }
 
 }  // namespace
@@ -103,6 +132,27 @@ class PathPlanningIntegrationTest : public CppUnit::TestFixture {
     const ModuleStatusInfo status = planning.status();
     CPPUNIT_ASSERT_EQUAL(regions, status.counters.at("regions_fetched"));
     CPPUNIT_ASSERT_EQUAL(replanned.plan.mapRevision, status.counters.at("map_revision"));
+
+    kernel.exportMap("", "two-room", false);
+    const std::string dir = set.cluster().dir();
+    const std::vector<std::string> trip{"--from", "1,1", "--to", "9,4"};
+    for (const std::vector<std::string>& where :
+         {std::vector<std::string>{"--naming", "127.0.0.1:" + std::to_string(set.cluster().namingPort())},
+          std::vector<std::string>{"--map", dir + "/run/exports/two-room.rgmap.json"}}) {
+      std::vector<std::string> args = where;
+      args.insert(args.end(), trip.begin(), trip.end());
+      args.insert(args.end(), {"--svg", dir + "/plan.svg", "--png", dir + "/plan.png"});
+      const auto [code, output] = runPlanTool(args, dir + "/plan-" + where.front().substr(2) + ".log");
+      CPPUNIT_ASSERT_EQUAL_MESSAGE(output, 0, code);
+      CPPUNIT_ASSERT_MESSAGE(output, output.find("plan ") == 0);
+      CPPUNIT_ASSERT_MESSAGE(output, output.find("x=9.000 y=4.000") != std::string::npos);
+      std::ifstream svg(dir + "/plan.svg");
+      const std::string picture{std::istreambuf_iterator<char>(svg), std::istreambuf_iterator<char>()};
+      CPPUNIT_ASSERT(picture.find("<g class=\"plan-path\">") != std::string::npos);
+      CPPUNIT_ASSERT(std::filesystem::file_size(dir + "/plan.png") > 0);
+      std::filesystem::remove(dir + "/plan.svg");
+      std::filesystem::remove(dir + "/plan.png");
+    }
   }
 };
 

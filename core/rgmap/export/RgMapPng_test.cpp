@@ -1,6 +1,7 @@
 // Tests the RG Map's PNG export on the map of the two-room tour: the file reads back (core/raster) at
 // the size of the picture's extent, each region's colour at its freespace centroid, doors drawn
-// on the true door lines, a ring corridor labelled in its freespace, bad resolutions refused.
+// on the true door lines, a ring corridor labelled in its freespace, bad resolutions refused,
+// overlays painted over everything.
 #include "core/rgmap/export/RgMapPng.h"
 
 #include <cppunit/extensions/HelperMacros.h>
@@ -37,6 +38,7 @@ class RgMapPngTest : public CppUnit::TestFixture {
   CPPUNIT_TEST(doorsAreDrawnOnTheDoorLines);
   CPPUNIT_TEST(ringIsLabelledInItsFreespace);
   CPPUNIT_TEST(badResolutionIsRefused);
+  CPPUNIT_TEST(overlaysArePaintedOverTheMap);
   CPPUNIT_TEST_SUITE_END();
 
  public:
@@ -71,6 +73,14 @@ class RgMapPngTest : public CppUnit::TestFixture {
     }
     CPPUNIT_ASSERT(regionColour(RegionId{1}) != regionColour(RegionId{2}) && regionColour(RegionId{2}) != regionColour(RegionId{3}) &&
                    regionColour(RegionId{1}) != regionColour(RegionId{3}));
+  }
+
+  void overlaysArePaintedOverTheMap() {
+    const Rgb green{0, 160, 60};
+    const cv::Mat image = renderRgMap(snapshot_, 0.05, {{{{1.0, 1.0}, {9.0, 1.0}, {9.0, 4.0}}, green, 0.1, 0.0, "path"}});
+    for (const Eigen::Vector2d& p : {Eigen::Vector2d(5.0, 1.0), Eigen::Vector2d(9.0, 3.0), Eigen::Vector2d(9.0, 2.0)})
+      CPPUNIT_ASSERT(pixel(image, canvas_->pixelOf(p)) == green);  // over freespace, and over door 12
+    CPPUNIT_ASSERT(pixel(image, canvas_->pixelOf({5.0, 1.5})) != green);
   }
 
   void doorsAreDrawnOnTheDoorLines() {

@@ -1,6 +1,7 @@
 // Tests the RG Map's SVG export on the map of the two-room tour: one freespace fill, one group
 // and one label per region, one element per gateway with its crossing points and class label,
-// balanced tags, escaped names, a scale bar, the same bytes for the same map.
+// balanced tags, escaped names, a scale bar, the same bytes for the same map, overlays drawn on
+// top as polylines with their markers.
 #include "core/rgmap/export/RgMapSvg.h"
 
 #include <cppunit/extensions/HelperMacros.h>
@@ -29,6 +30,7 @@ class RgMapSvgTest : public CppUnit::TestFixture {
   CPPUNIT_TEST(tagsAreBalanced);
   CPPUNIT_TEST(namesAreEscaped);
   CPPUNIT_TEST(sameMapGivesSameBytes);
+  CPPUNIT_TEST(overlaysAreDrawnLast);
   CPPUNIT_TEST_SUITE_END();
 
  public:
@@ -79,6 +81,17 @@ class RgMapSvgTest : public CppUnit::TestFixture {
     rgnav::testing::TempDir dir;
     writeRgMapSvg(dir.file("map.svg"), snapshotOf(*kernel_));
     CPPUNIT_ASSERT(svg_ == readCheckpoint(dir.file("map.svg")).value());
+  }
+
+  void overlaysAreDrawnLast() {
+    const MapPolyline path{{{1.0, 1.0}, {9.0, 1.0}, {9.0, 4.0}}, Rgb{0, 160, 60}, 0.1, 0.09, "plan-path"};
+    const std::string svg = exportRgMapSvg(snapshotOf(*kernel_), {path});
+    const std::size_t group = svg.find("<g class=\"plan-path\">");
+    CPPUNIT_ASSERT(group != std::string::npos);
+    CPPUNIT_ASSERT(group > svg.rfind("class=\"region-label\""));
+    CPPUNIT_ASSERT(svg.find("points=\"1,-1 9,-1 9,-4\"", group) != std::string::npos);
+    CPPUNIT_ASSERT_EQUAL(std::size_t(3), count(svg.substr(group), "<circle"));
+    CPPUNIT_ASSERT_EQUAL(std::string(), rgnav::testing::unbalancedTags(svg));
   }
 
  private:
