@@ -88,4 +88,20 @@ std::vector<Eigen::Vector2d> pointsFrom(const nlohmann::json& j);
 nlohmann::json jsonPose(const Pose2D& p);
 Pose2D poseFrom(const nlohmann::json& j);
 
+// Runs `read`, a reader of a JSON document in these forms, and turns what a malformed document
+// makes it throw (FormatError, nlohmann's json::exception, InvalidArgumentError for a value out
+// of range) into a FormatError naming `source`.
+template <class F>
+auto readingJson(const std::string& source, F&& read) {
+  try {
+    return read();
+  } catch (const FormatError& e) {
+    throw FormatError(source, 0, e.what());
+  } catch (const nlohmann::json::exception& e) {
+    throw FormatError(source, 0, e.what());
+  } catch (const InvalidArgumentError& e) {
+    throw FormatError(source, 0, e.what());
+  }
+}
+
 }  // namespace rgnav

@@ -97,7 +97,7 @@ std::string PlanStore::serialize() const {
 }
 
 PlanStore PlanStore::deserialize(const std::string& text, const std::string& source, std::size_t kept) {
-  try {
+  return readingJson(source, [&] {
     const json j = json::parse(text);
     if (j.at("format") != kFormat || j.at("version") != kVersion)
       throw FormatError(source, 0, std::string("not a ") + kFormat + " version " + std::to_string(kVersion) + " file");
@@ -107,13 +107,7 @@ PlanStore PlanStore::deserialize(const std::string& text, const std::string& sou
     for (const json& p : plans) store.add(planFrom(p));
     store.nextId_ = std::max<PlanId>(store.nextId_, integerFrom(j.at("nextId")));
     return store;
-  } catch (const FormatError& e) {
-    throw FormatError(source, 0, e.what());
-  } catch (const json::exception& e) {
-    throw FormatError(source, 0, e.what());
-  } catch (const InvalidArgumentError& e) {
-    throw FormatError(source, 0, e.what());
-  }
+  });
 }
 
 }  // namespace rgnav

@@ -116,7 +116,7 @@ GraphView graph(const json& j) {
 }  // namespace
 
 PlanningMap planningMapFromJson(const std::string& text, const std::string& source) {
-  try {
+  return readingJson(source, [&] {
     const json j = json::parse(text);
     if (j.at("format") != kFormat || j.at("version") != kVersion)
       throw FormatError(source, 0, std::string("not a ") + kFormat + " version " + std::to_string(kVersion) + " map");
@@ -126,13 +126,7 @@ PlanningMap planningMapFromJson(const std::string& text, const std::string& sour
     map.graph = graph(j.at("graph"));
     map.revision = integerFrom(j.at("summary").at("lastEventId"));
     return map;
-  } catch (const FormatError& e) {
-    throw FormatError(source, 0, e.what());
-  } catch (const json::exception& e) {
-    throw FormatError(source, 0, e.what());
-  } catch (const InvalidArgumentError& e) {
-    throw FormatError(source, 0, e.what());
-  }
+  });
 }
 
 PlanningMap loadPlanningMap(const std::string& file) {
