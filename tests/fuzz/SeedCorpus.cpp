@@ -21,6 +21,7 @@
 #include "core/logs/IntelJsonLogReader.h"
 #include "core/logs/LineReader.h"
 #include "core/logs/LogTestFiles.h"
+#include "core/rgmap/export/RgMapJson.h"
 #include "core/rgmap/kernel/RgMapCodec.h"
 #include "core/rgmap/kernel/testing/SyntheticTour.h"
 #include "core/slam/ScanMapper.h"
@@ -151,6 +152,13 @@ void rgMapSeeds(const SeedWriter& seeds) {
   }
 }
 
+void rgMapJsonSeeds(const SeedWriter& seeds) {
+  const auto inputs = rgnav::testing::twoRoomTour().inputs();
+  for (const std::size_t count : {std::size_t(8), std::size_t(inputs.size())})
+    seeds.write("rgmap_json", "tour-" + std::to_string(count) + ".rgmap.json",
+                rgnav::exportRgMapJson(rgnav::snapshotOf(rgnav::testing::mapped(inputs, count))));
+}
+
 void hmmSeeds(const SeedWriter& seeds, const rgnav::HmmClassifier& classifier) {
   rgnav::saveHmmModels(seeds.file("hmm_model_file", "config-first-class.txt"),
                        classifier.subset({classifier.classes().front()}));
@@ -177,7 +185,7 @@ int main(int argc, char** argv) {
     seeds.copyYaml("vector_world", root / "config/worlds");
     seeds.copyYaml("simulation_config", root / "config/sim");
     // The module_config target's first byte picks the module.
-    const std::vector<std::string> modules = {"scanmapper", "gatewaydetection", "rgmappingkernel"};
+    const std::vector<std::string> modules = {"scanmapper", "gatewaydetection", "rgmappingkernel", "pathplanning"};
     for (std::size_t m = 0; m < modules.size(); ++m)
       seeds.write("module_config", modules[m],
                   std::string(1, char(m)) + rgnav::readConfigFile((root / "config/modules" / (modules[m] + ".yaml")).string()));
@@ -186,6 +194,7 @@ int main(int argc, char** argv) {
     const rgnav::HmmClassifier classifier = rgnav::loadHmmModels((root / "config/gateways/gateway-hmms.txt").string());
     detectionSeeds(seeds, scans, classifier);
     rgMapSeeds(seeds);
+    rgMapJsonSeeds(seeds);
     hmmSeeds(seeds, classifier);
   } catch (const std::exception& e) {
     std::cerr << "rgnav-fuzz-seeds: " << e.what() << "\n";

@@ -42,6 +42,10 @@ RegionView region(const json& j) {
   r.freespace.width = integerFrom(f.at("width"));
   r.freespace.height = integerFrom(f.at("height"));
   r.freespace.bytes = decodeBase64(f.at("bits").get<std::string>());
+  if (r.freespace.width < 0 || r.freespace.height < 0 || !(r.freespace.resolutionM > 0.0))
+    throw FormatError("<map>", 0, "region " + std::to_string(r.summary.id.value()) + ": a freespace of " +
+                                      f.at("width").dump() + " x " + f.at("height").dump() + " cells of " +
+                                      f.at("resolution").dump() + " m");
   const std::size_t cells = std::size_t(r.freespace.width) * std::size_t(r.freespace.height);
   if (r.freespace.bytes.size() != (cells + 7) / 8)
     throw FormatError("<map>", 0, "region " + std::to_string(r.summary.id.value()) + ": " +

@@ -14,7 +14,8 @@
 namespace rgnav {
 
 // Throws FormatError naming `source` for text that is not such a map (another format or
-// version, a missing or mistyped field, an edge naming an unknown node).
+// version, a missing or mistyped field, a freespace whose size and bits disagree, an edge naming
+// an unknown node).
 PlanningMap planningMapFromJson(const std::string& text, const std::string& source);
 // FileError if the file cannot be read.
 PlanningMap loadPlanningMap(const std::string& file);

@@ -1,8 +1,8 @@
 // An RG map exported to JSON (RgMapJson.h) and read back into a PlanningMap equals what the kernel
 // serves of it (RgMapViews.h) up to the export's rounding: every region with its frame, lines,
 // freespace bits and named objects, the map's gateways, the graph's nodes and edges with their
-// costs, and the revision. Files of another format or version, or with an edge naming an unknown
-// node, are FormatErrors naming the source.
+// costs, and the revision. Files of another format or version, with a freespace whose size and
+// bits disagree, or with an edge naming an unknown node, are FormatErrors naming the source.
 #include <cppunit/extensions/HelperMacros.h>
 
 #include <nlohmann/json.hpp>
@@ -22,6 +22,16 @@ constexpr double kMm = 0.0005 + 1e-9;  // the export rounds positions to 1 mm
 constexpr double kAngle = 0.00005 + 1e-9;
 
 bool near(const Eigen::Vector2d& a, const Eigen::Vector2d& b) { return (a - b).cwiseAbs().maxCoeff() <= kMm; }
+
+// The message of the FormatError reading `text` ends in; "(read)" if it was read.
+std::string formatErrorOf(const std::string& text) {
+  try {
+    planningMapFromJson(text, "map");
+  } catch (const FormatError& e) {
+    return e.what();
+  }
+  return "(read)";
+}
 
 }  // namespace
 
@@ -104,6 +114,16 @@ class PlanningMapJsonTest : public CppUnit::TestFixture {
       CPPUNIT_ASSERT(std::string(e.what()).find("G99A") != std::string::npos);
     }
     CPPUNIT_ASSERT_THROW(planningMapFromJson("{", "cut"), FormatError);
+    j = nlohmann::json::parse(text);
+    j["regions"][0]["freespace"]["width"] = -1;
+    j["regions"][0]["freespace"]["height"] = 0;
+    j["regions"][0]["freespace"]["bits"] = "";
+    const std::string negative = formatErrorOf(j.dump());
+    CPPUNIT_ASSERT_MESSAGE(negative, negative.find("-1 x 0 cells") != std::string::npos);
+    j = nlohmann::json::parse(text);
+    j["regions"][0]["freespace"]["height"] = j["regions"][0]["freespace"]["height"].get<int>() + 100;
+    const std::string shortBits = formatErrorOf(j.dump());
+    CPPUNIT_ASSERT_MESSAGE(shortBits, shortBits.find("freespace bytes for") != std::string::npos);
   }
 };
 

@@ -19,6 +19,7 @@ const std::vector<NamedFuzzTarget>& fuzzTargets() {
       {"slam_checkpoint", fuzzSlamCheckpoint},
       {"detection_checkpoint", fuzzDetectionCheckpoint},
       {"rgmap_checkpoint", fuzzRgMapCheckpoint},
+      {"rgmap_json", fuzzRgMapJson},
       {"hmm_model_file", fuzzHmmModelFile},
   };
   return targets;

@@ -33,6 +33,7 @@ void fuzzModuleConfig(const std::uint8_t* data, std::size_t size);
 void fuzzSlamCheckpoint(const std::uint8_t* data, std::size_t size);
 void fuzzDetectionCheckpoint(const std::uint8_t* data, std::size_t size);
 void fuzzRgMapCheckpoint(const std::uint8_t* data, std::size_t size);
+void fuzzRgMapJson(const std::uint8_t* data, std::size_t size);
 void fuzzHmmModelFile(const std::uint8_t* data, std::size_t size);
 
 }  // namespace rgnav::fuzz

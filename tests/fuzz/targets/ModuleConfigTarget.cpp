@@ -1,7 +1,8 @@
 // Fuzz target: the module parameter files (config/modules/) parsed strictly. The first byte picks
-// the module (ScanMapper, GatewayDetection, RG Mapping Kernel), the rest is the YAML text.
+// the module (ScanMapper, GatewayDetection, RG Mapping Kernel, PathPlanning), the rest is the YAML text.
 #include "core/common/Errors.h"
 #include "core/gateways/detection/GatewayDetectorConfigYaml.h"
+#include "core/nav/planning/RoutePlannerConfigYaml.h"
 #include "core/rgmap/kernel/RgMappingKernelConfigYaml.h"
 #include "core/slam/SlamConfigYaml.h"
 #include "tests/fuzz/targets/FuzzInput.h"
@@ -13,15 +14,18 @@ void fuzzModuleConfig(const std::uint8_t* data, std::size_t size) {
   if (size == 0) return;
   const std::string text = fuzzText(data + 1, size - 1);
   try {
-    switch (data[0] % 3) {
+    switch (data[0] % 4) {
       case 0:
         parseSlamConfig(text, "scanmapper.yaml");
         break;
       case 1:
         parseGatewayDetectorConfig(text, "gatewaydetection.yaml");
         break;
-      default:
+      case 2:
         parseRgMappingKernelConfig(text, "rgmappingkernel.yaml");
+        break;
+      default:
+        parseRoutePlannerConfig(text, "pathplanning.yaml");
     }
   } catch (const Error&) {
   }
