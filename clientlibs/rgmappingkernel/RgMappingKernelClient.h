@@ -1,9 +1,9 @@
 // RgMappingKernelClient: the RG Map of the RGMappingKernel module: regions with descriptions,
-// gateways, the RG graph and paths, names, merges and door states, the map's events by ID, export. Names and
-// merges are not idempotent: each call carries a new random request ID, kept over its retries,
-// so that the kernel acts on it once however often a lost answer makes the client ask
-// (RGMappingKernel.idl). Errors: BadArgumentError naming the field, NotAvailableError,
-// ModuleFailedError, ModuleUnavailableError (ClientConnection.h).
+// gateways, the RG graph and paths, names, merges and door states, the map's events by ID,
+// export. Names, merges and door states are not idempotent: each call carries a new random
+// request ID, kept over its retries, so that the kernel acts on it once however often a lost
+// answer makes the client ask (RGMappingKernel.idl). Errors: BadArgumentError naming the field,
+// NotAvailableError, ModuleFailedError, ModuleUnavailableError (ClientConnection.h).
 #pragma once
 
 #include <chrono>

@@ -2,9 +2,10 @@
 // two-room map): a plan from the hallway into room 2 with its targets and route, served again as
 // the last plan and by ID; a plan to a region by ID; typed NoPath for a goal outside every region
 // and for a start far from every region; bad arguments refused naming the field; and a door
-// reported blocked raises its learned cost in the kernel by the fixed length (thesis 5.4) and
-// gives a new plan. The module fetches each region from the kernel once while no event changes
-// it: neither a second plan on the same revision nor a learned door cost fetches any again.
+// reported blocked raises its learned cost in the kernel by the fixed length (thesis 5.4), once
+// per request ID, and gives a new plan. The module fetches each region from the kernel once while
+// no event changes it: neither a second plan on the same revision nor a learned door cost fetches
+// any again.
 // rgnav-plan plans through the module and offline on the kernel's exported map, both ending at
 // the goal, and draws the path into its SVG and PNG.
 #include <cppunit/extensions/HelperMacros.h>
@@ -132,6 +133,13 @@ class PathPlanningIntegrationTest : public CppUnit::TestFixture {
     const ModuleStatusInfo status = planning.status();
     CPPUNIT_ASSERT_EQUAL(regions, status.counters.at("regions_fetched"));
     CPPUNIT_ASSERT_EQUAL(replanned.plan.mapRevision, status.counters.at("map_revision"));
+    // The kernel acts once per request ID: found open (back to the base cost), then found blocked
+    // twice under one request ID (once more would be another 30 m).
+    kernel.reportDoorState(door, true, 77);
+    CPPUNIT_ASSERT_DOUBLES_EQUAL(before, doorCost(kernel, door), 1e-9);
+    kernel.reportDoorState(door, false, 78);
+    kernel.reportDoorState(door, false, 78);
+    CPPUNIT_ASSERT_DOUBLES_EQUAL(before + 30.0, doorCost(kernel, door), 1e-9);
 
     kernel.exportMap("", "two-room", false);
     const std::string dir = set.cluster().dir();
