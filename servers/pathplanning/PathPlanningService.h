@@ -7,7 +7,9 @@
 // lost with a killed module is planned again by the restarted one: under the same ID (the
 // numbering resumes from the checkpoint) and with the same targets (a plan depends only on its
 // arguments and the map revision). A checkpoint that cannot be written degrades the module and is
-// tried again at the next plan after a backoff (CheckpointRetry.h); the plans are still served.
+// tried again at the next plan after a backoff (CheckpointRetry.h); the plans are still served,
+// but a restart meanwhile forgets those made since the last checkpoint written, and gives their
+// IDs again.
 // One plan at a time: the planner and the cache are guarded by one lock.
 #pragma once
 
