@@ -46,7 +46,7 @@ GatewaySnapshot gatewaySnapshot(const GatewayView& v) {
 std::vector<MapPolyline> planOverlays(const PlanRecord& plan) {
   std::vector<Eigen::Vector2d> targets;
   for (const TargetPose& t : plan.plan.targets) targets.push_back({t.pose.x, t.pose.y});
-  return {{plan.plan.path, kPathColour, 0.1, 0.0, "plan-path"}, {targets, kTargetColour, 0.0, 0.09, "plan-targets"}};
+  return {{plan.plan.path, kPathColour, 0.15, 0.0, "plan-path"}, {targets, kTargetColour, 0.0, 0.12, "plan-targets"}};
 }
 
 }  // namespace
