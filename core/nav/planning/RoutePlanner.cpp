@@ -233,54 +233,71 @@ Plan RoutePlanner::plan(const Pose2D& startPose, const PlanGoal& goal) const {
     return endLinks.insert_or_assign({a, b}, std::pair{region, std::move(found)}).first->second.second;
   };
 
-  // A* over crossing points plus start and goal; costs are discovered as edges are relaxed.
+  // Lazy A* over crossing points plus start and goal (Cohen, Phillips, Likhachev, "Planning
+  // Single-Arm Manipulations with n-Arm Robots", SoCS 2014: lazy weighted A*, here unweighted): an
+  // edge whose cost needs a region path enters the open list with its lower bound (learned cost or
+  // straight-line length) and is planned only when that entry comes first, so that region paths
+  // are planned for the few edges near the best route, not for every edge relaxed.
+  struct Entry {
+    double f = 0.0, g = 0.0;
+    std::size_t node = 0, from = 0;
+    RegionId region;        // none: through a gateway
+    bool verified = false;  // g is the true cost via `from`
+    bool operator>(const Entry& o) const { return f > o.f; }
+  };
   struct Via {
     std::size_t from = 0;
-    RegionId region;  // none: through a gateway
+    RegionId region;
   };
-  std::vector<double> cost(nodes.size() + 2, kUnreachable);
-  std::vector<std::optional<Via>> via(nodes.size() + 2);
-  using Item = std::pair<double, std::size_t>;
-  std::priority_queue<Item, std::vector<Item>, std::greater<>> open;
+  const std::size_t count = nodes.size() + 2;
+  std::vector<double> best(count, kUnreachable);  // best verified g
+  std::vector<bool> closed(count, false);
+  std::vector<std::optional<Via>> via(count);
+  std::priority_queue<Entry, std::vector<Entry>, std::greater<>> open;
   const auto heuristic = [&](std::size_t i) { return (position(i) - end.point).norm(); };
-  const auto relax = [&](std::size_t from, std::size_t to, double edgeCost, RegionId region) {
-    if (!std::isfinite(edgeCost) || cost[from] + edgeCost >= cost[to]) return;
-    cost[to] = cost[from] + edgeCost;
-    via[to] = Via{from, region};
-    open.push({cost[to] + heuristic(to), to});
+  const auto push = [&](std::size_t from, std::size_t to, double g, RegionId region, bool verified) {
+    if (!std::isfinite(g) || closed[to] || g >= best[to]) return;
+    if (verified) best[to] = g;
+    open.push({g + heuristic(to), g, to, from, region, verified});
   };
   const auto linkCost = [&](RegionId region, std::size_t a, std::size_t b) {
     const auto& path = regionPath(region, a, b);
     return path ? polylineLength(*path) : kUnreachable;
   };
   const auto inEnds = [](const Ends& e, RegionId r) { return std::find(e.regions.begin(), e.regions.end(), r) != e.regions.end(); };
+  const auto straight = [&](std::size_t a, std::size_t b) { return (position(a) - position(b)).norm(); };
 
-  cost[s] = 0.0;
-  open.push({heuristic(s), s});
-  std::vector<bool> closed(nodes.size() + 2, false);
+  push(s, s, 0.0, RegionId{}, true);
   while (!open.empty()) {
-    const std::size_t u = open.top().second;
+    const Entry e = open.top();
     open.pop();
-    if (closed[u]) continue;
-    closed[u] = true;
-    if (u == g) break;
-    if (u == s) {
+    if (closed[e.node]) continue;
+    if (!e.verified) {
+      const double c = e.from == s || e.node == g ? linkCost(e.region, e.from, e.node)
+                                                  : std::max(e.g - best[e.from], linkCost(e.region, e.from, e.node));
+      push(e.from, e.node, best[e.from] + c, e.region, true);
+      continue;
+    }
+    closed[e.node] = true;
+    if (e.node != s) via[e.node] = Via{e.from, e.region};
+    if (e.node == g) break;
+    const double at = best[e.node];
+    if (e.node == s) {
       for (RegionId r : start.regions) {
-        if (inEnds(end, r)) relax(s, g, linkCost(r, s, g), r);
+        if (inEnds(end, r)) push(s, g, at + straight(s, g), r, false);
         for (std::size_t i = 0; i < nodes.size(); ++i)
-          if (nodes[i].region == r) relax(s, i, linkCost(r, s, i), r);
+          if (nodes[i].region == r) push(s, i, at + straight(s, i), r, false);
       }
       continue;
     }
-    if (inEnds(end, nodes[u].region)) relax(u, g, linkCost(nodes[u].region, u, g), nodes[u].region);
-    for (const GraphEdgeView& e : map_.graph.edges) {
-      if (e.from != u && e.to != u) continue;
-      const std::size_t v = e.from == u ? e.to : e.from;
-      if (closed[v]) continue;
-      if (e.throughGateway())
-        relax(u, v, e.costM, RegionId{});
+    if (inEnds(end, nodes[e.node].region)) push(e.node, g, at + straight(e.node, g), nodes[e.node].region, false);
+    for (const GraphEdgeView& edge : map_.graph.edges) {
+      if (edge.from != e.node && edge.to != e.node) continue;
+      const std::size_t v = edge.from == e.node ? edge.to : edge.from;
+      if (edge.throughGateway())
+        push(e.node, v, at + edge.costM, RegionId{}, true);
       else
-        relax(u, v, std::max(e.costM, linkCost(e.region, u, v)), e.region);
+        push(e.node, v, at + std::max(edge.costM, straight(e.node, v)), edge.region, false);
     }
   }
   if (!via[g]) {
@@ -290,34 +307,71 @@ Plan RoutePlanner::plan(const Pose2D& startPose, const PlanGoal& goal) const {
     throw NoPathError("no route from region " + from + " to region " + to + " in the RG graph");
   }
 
-  // The legs in driving order.
+  // The legs in driving order, as one polyline whose points know the region of the leg that
+  // reaches them (a gateway's leg: the region it leads into).
   std::vector<std::size_t> order{g};
   while (order.back() != s) order.push_back(via[order.back()]->from);
   std::reverse(order.begin(), order.end());
   Plan out;
   out.mapRevision = map_.revision;
-  out.startRegion = via[order[1]]->region.isNone() ? start.regions.front() : via[order[1]]->region;
-  out.goalRegion = via[g]->region;
-  std::vector<PathLeg> legs;
-  legs.push_back({out.startRegion, {start.given}});
+  std::vector<RegionId> regions;  // the regions passed, in driving order
+  std::vector<Eigen::Vector2d> points{start.point};
+  std::vector<std::size_t> pointRegion{0};
   for (std::size_t k = 1; k < order.size(); ++k) {
     const std::size_t a = order[k - 1], b = order[k];
     if (b < s) out.route.push_back(nodes[b]);
     const Via& step = *via[b];
-    PathLeg leg;
-    if (step.region.isNone()) {
-      leg = {nodes[b].region, {nodes[a].position, nodes[b].position}};
-    } else {
-      const std::optional<Polyline>& path = regionPath(step.region, a, b);
-      leg = {step.region, *path};
+    const RegionId region = step.region.isNone() ? nodes[b].region : step.region;
+    if (regions.empty() || regions.back() != region) regions.push_back(region);
+    const Polyline leg = step.region.isNone() ? Polyline{nodes[a].position, nodes[b].position} : *regionPath(region, a, b);
+    for (std::size_t i = 1; i < leg.size(); ++i) {
+      points.push_back(leg[i]);
+      pointRegion.push_back(regions.size() - 1);
     }
-    legs.push_back(std::move(leg));
   }
-  for (const PathLeg& leg : legs)
-    for (const Eigen::Vector2d& p : leg.points)
-      if (out.path.empty() || (p - out.path.back()).norm() > 1e-9) out.path.push_back(p);
+  // The start's point belongs to the first region.
+  pointRegion.front() = 0;
+
+  // String pulling across legs: a point is dropped while the shortcut past it stays free in the
+  // grids of the regions between its ends (checked every half cell: a shortcut may clip a blocked
+  // cell's corner by at most a quarter cell, inside the robot-radius inflation).
+  const auto freeIn = [&](const Eigen::Vector2d& p, std::size_t firstRegion, std::size_t lastRegion) {
+    for (std::size_t k = firstRegion; k <= lastRegion; ++k)
+      if (entry(regions[k]).freeAt(p)) return true;
+    return false;
+  };
+  const auto shortcutFree = [&](std::size_t i, std::size_t j) {
+    const Eigen::Vector2d a = points[i], b = points[j];
+    const int samples = std::max(1, static_cast<int>(std::ceil((b - a).norm() / (0.5 * config_.gridResolutionM))));
+    for (int k = 0; k <= samples; ++k)
+      if (!freeIn(a + (b - a) * (double(k) / samples), pointRegion[i], pointRegion[j])) return false;
+    return true;
+  };
+  std::vector<std::size_t> kept{0};
+  for (std::size_t i = 0; i + 1 < points.size();) {
+    std::size_t j = i + 1;
+    while (j + 1 < points.size() && shortcutFree(i, j + 1)) ++j;
+    kept.push_back(j);
+    i = j;
+  }
+  if (start.given != start.point) out.path.push_back(start.given);
+  for (std::size_t i : kept)
+    if (out.path.empty() || (points[i] - out.path.back()).norm() > 1e-9) out.path.push_back(points[i]);
   out.lengthM = polylineLength(out.path);
-  out.targets = targetsAlong(legs, config_.targetMinSpacingM, config_.targetMaxSpacingM, end.heading);
+  out.startRegion = regions.front();
+  out.goalRegion = regions.back();
+
+  // Targets, each in the first region from the previous target's on whose free cells it lies.
+  std::size_t current = 0;
+  for (const Pose2D& pose : targetsAlong(out.path, config_.targetMinSpacingM, config_.targetMaxSpacingM, end.heading)) {
+    for (std::size_t k = current; k < regions.size(); ++k)
+      if (entry(regions[k]).freeAt({pose.x, pose.y})) {
+        current = k;
+        break;
+      }
+    out.targets.push_back({pose, regions[current]});
+  }
+  if (!out.targets.empty()) out.targets.back().region = out.goalRegion;
   return out;
 }
 

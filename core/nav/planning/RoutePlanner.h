@@ -11,7 +11,9 @@
 //     line through walls.
 //   - Region paths: the framed-quadtree planner (FramedQuadtreePlanner.h) in each region between
 //     its entry and exit points; a gateway is crossed on the straight line between its two
-//     crossing points.
+//     crossing points. Ours: the joined path is then string-pulled across the legs (a crossing
+//     point is dropped where the shortcut stays free in the grids of the regions it passes), so
+//     that the path does not kink at every crossing point.
 // Goals: a point of the map frame, a region (by ID or name: its free point nearest the freespace
 // centroid), or a named object (a free pose in front of it, facing it). A start outside every
 // region is placed in the nearest region within `startSnapM`.
@@ -87,13 +89,15 @@ class RoutePlanner {
   // InvalidArgumentError for a non-finite start or goal point.
   Plan plan(const Pose2D& start, const PlanGoal& goal) const;
 
+  // The regions in whose planning grid `point` (map frame) lies in a free cell: where the robot
+  // can stand in the map.
+  std::vector<RegionId> regionsAt(const Eigen::Vector2d& point) const;
+
  private:
   struct RegionEntry;
   struct Ends;
   // The region's grid and planner, built on first use. Throws NoPathError for an unknown region.
   RegionEntry& entry(RegionId region) const;
-  // The regions whose free cells hold `point` (map frame).
-  std::vector<RegionId> regionsAt(const Eigen::Vector2d& point) const;
   Ends startOf(const Pose2D& start) const;
   Ends goalOf(const PlanGoal& goal, const Eigen::Vector2d& start) const;
 
