@@ -12,6 +12,7 @@
 #include "core/lines/ScanPoints.h"
 #include "core/nav/grid/PlanningErrors.h"
 #include "core/nav/planning/RegionGrid.h"
+#include "core/nav/planning/RegionOverlaps.h"
 #include "core/nav/planning/TargetSpacing.h"
 
 namespace rgnav {
@@ -102,6 +103,7 @@ void RoutePlanner::setMap(PlanningMap map) {
   map_ = std::move(map);
   if (!same) {
     regions_.clear();
+    passages_.reset();
     return;
   }
   for (auto it = regions_.begin(); it != regions_.end();) {
@@ -202,46 +204,92 @@ RoutePlanner::Ends RoutePlanner::goalOf(const PlanGoal& goal, const Eigen::Vecto
   throw InvalidArgumentError("route planner: unknown goal kind");
 }
 
+const std::vector<RoutePlanner::Passage>& RoutePlanner::passages() const {
+  if (passages_) return *passages_;
+  std::vector<Passage> out;
+  for (std::size_t i = 0; i < map_.regions.size(); ++i)
+    for (std::size_t k = i + 1; k < map_.regions.size(); ++k) {
+      const RegionView &a = map_.regions[i], &b = map_.regions[k];
+      for (const Eigen::Vector2d& p : overlapTransfers(entry(a.summary.id).grid, a.summary.frame, entry(b.summary.id).grid,
+                                                       b.summary.frame, config_.overlapSampleM, config_.overlapMinAreaM2))
+        out.push_back({GatewayId{}, {{p, a.summary.id, 0}, {p, b.summary.id, 0}}});
+    }
+  for (const GatewayView& gateway : map_.gateways) {
+    if (!gateway.sideA.isNone() && !gateway.sideB.isNone()) continue;  // in the RG graph
+    Passage passage{gateway.id, {}};
+    for (std::size_t c = 0; c < gateway.crossingPoints.size(); ++c)
+      for (const RegionView& r : map_.regions)
+        if (entry(r.summary.id).nearestFree(gateway.crossingPoints[c], config_.crossingSnapM))
+          passage.ends.push_back({gateway.crossingPoints[c], r.summary.id, c});
+    if (passage.ends.size() > 1) out.push_back(std::move(passage));
+  }
+  return passages_.emplace(std::move(out));
+}
+
 Plan RoutePlanner::plan(const Pose2D& startPose, const PlanGoal& goal) const {
   const Ends start = startOf(startPose);
   const Ends end = goalOf(goal, start.point);
-  const auto& nodes = map_.graph.nodes;
-  const std::size_t s = nodes.size(), g = nodes.size() + 1;
-  const auto position = [&](std::size_t i) -> Eigen::Vector2d {
-    return i == s ? start.point : (i == g ? end.point : nodes[i].position);
-  };
 
-  // The region path of a link, cached per region for crossing point pairs. A crossing point in a
-  // blocked cell (inflation at a narrow door) is moved to the nearest free cell.
-  std::map<std::pair<std::size_t, std::size_t>, std::pair<RegionId, std::optional<Polyline>>> endLinks;
+  // The search's nodes: the RG graph's crossing points, the ends of every other passage, the
+  // start and the goal.
+  constexpr std::size_t kNoPassage = std::numeric_limits<std::size_t>::max();
+  struct Node {
+    Eigen::Vector2d position;
+    RegionId region;
+    bool onGateway = false;           // a crossing point (to be placed on a free cell)
+    std::size_t passage = kNoPassage;  // index in passages(); none for RG graph nodes, start, goal
+    std::size_t crossing = 0;         // a gateway passage's: the crossing point's index
+  };
+  std::vector<Node> nodes;
+  for (const GraphNodeView& n : map_.graph.nodes) nodes.push_back({n.position, n.region, true});
+  const std::size_t graphNodes = nodes.size();
+  std::vector<std::vector<std::size_t>> passageNodes(passages().size());
+  for (std::size_t k = 0; k < passages().size(); ++k)
+    for (std::size_t e = 0; e < passages()[k].ends.size(); ++e) {
+      passageNodes[k].push_back(nodes.size());
+      const PassageEnd& end = passages()[k].ends[e];
+      nodes.push_back({end.position, end.region, !passages()[k].gateway.isNone(), k, end.crossing});
+    }
+  const std::size_t s = nodes.size(), g = nodes.size() + 1;
+  nodes.push_back({start.point, RegionId{}, false});
+  nodes.push_back({end.point, RegionId{}, false});
+  std::map<RegionId, std::vector<std::size_t>> members;
+  for (std::size_t i = 0; i < s; ++i) members[nodes[i].region].push_back(i);
+  std::map<std::pair<std::size_t, std::size_t>, double> learned;  // region edges' learned costs
+  for (const GraphEdgeView& e : map_.graph.edges)
+    if (!e.throughGateway()) learned[std::minmax(e.from, e.to)] = e.costM;
+
+  // The region path of a link, cached per region for pairs of graph and transfer nodes. A crossing
+  // point in a blocked cell (inflation at a narrow door) is moved to the nearest free cell.
+  std::map<std::pair<std::size_t, std::size_t>, std::optional<Polyline>> endLinks;
   const auto regionPath = [&](RegionId region, std::size_t a, std::size_t b) -> const std::optional<Polyline>& {
     RegionEntry& r = entry(region);
-    const bool crossings = a < s && b < s;
-    if (crossings)
+    const bool cached = a < s && b < s;
+    if (cached)
       if (const auto it = r.between.find({a, b}); it != r.between.end()) return it->second;
     const auto placed = [&](std::size_t i) -> std::optional<Eigen::Vector2d> {
-      return i < s ? r.nearestFree(nodes[i].position, config_.crossingSnapM) : std::optional(position(i));
+      return nodes[i].onGateway ? r.nearestFree(nodes[i].position, config_.crossingSnapM) : std::optional(nodes[i].position);
     };
     std::optional<Polyline> found;
     const auto from = placed(a), to = placed(b);
     if (from && to) found = r.path(*from, *to);
     if (found) {
-      if (a < s) found->insert(found->begin(), nodes[a].position);
-      if (b < s) found->push_back(nodes[b].position);
+      if (nodes[a].onGateway) found->insert(found->begin(), nodes[a].position);
+      if (nodes[b].onGateway) found->push_back(nodes[b].position);
     }
-    if (crossings) return r.between.emplace(std::pair{a, b}, std::move(found)).first->second;
-    return endLinks.insert_or_assign({a, b}, std::pair{region, std::move(found)}).first->second.second;
+    if (cached) return r.between.emplace(std::pair{a, b}, std::move(found)).first->second;
+    return endLinks.insert_or_assign({a, b}, std::move(found)).first->second;
   };
 
-  // Lazy A* over crossing points plus start and goal (Cohen, Phillips, Likhachev, "Planning
-  // Single-Arm Manipulations with n-Arm Robots", SoCS 2014: lazy weighted A*, here unweighted): an
-  // edge whose cost needs a region path enters the open list with its lower bound (learned cost or
-  // straight-line length) and is planned only when that entry comes first, so that region paths
-  // are planned for the few edges near the best route, not for every edge relaxed.
+  // Lazy A* (Cohen, Phillips, Likhachev, "Planning Single-Arm Manipulations with n-Arm Robots",
+  // SoCS 2014: lazy weighted A*, here unweighted): a link through a region enters the open list
+  // with its lower bound (its learned cost or straight-line length) and its region path is planned
+  // only when that entry comes first, so that region paths are planned for the few links near the
+  // best route, not for every link relaxed.
   struct Entry {
     double f = 0.0, g = 0.0;
     std::size_t node = 0, from = 0;
-    RegionId region;        // none: through a gateway
+    RegionId region;        // none: through a gateway or an overlap transfer
     bool verified = false;  // g is the true cost via `from`
     bool operator>(const Entry& o) const { return f > o.f; }
   };
@@ -249,23 +297,27 @@ Plan RoutePlanner::plan(const Pose2D& startPose, const PlanGoal& goal) const {
     std::size_t from = 0;
     RegionId region;
   };
-  const std::size_t count = nodes.size() + 2;
-  std::vector<double> best(count, kUnreachable);  // best verified g
-  std::vector<bool> closed(count, false);
-  std::vector<std::optional<Via>> via(count);
+  std::vector<double> best(nodes.size(), kUnreachable);  // best verified g
+  std::vector<bool> closed(nodes.size(), false);
+  std::vector<std::optional<Via>> via(nodes.size());
   std::priority_queue<Entry, std::vector<Entry>, std::greater<>> open;
-  const auto heuristic = [&](std::size_t i) { return (position(i) - end.point).norm(); };
+  const auto heuristic = [&](std::size_t i) { return (nodes[i].position - end.point).norm(); };
   const auto push = [&](std::size_t from, std::size_t to, double g, RegionId region, bool verified) {
     if (!std::isfinite(g) || closed[to] || g >= best[to]) return;
     if (verified) best[to] = g;
     open.push({g + heuristic(to), g, to, from, region, verified});
   };
-  const auto linkCost = [&](RegionId region, std::size_t a, std::size_t b) {
-    const auto& path = regionPath(region, a, b);
-    return path ? polylineLength(*path) : kUnreachable;
+  const auto lowerBound = [&](std::size_t a, std::size_t b) {
+    const double straight = (nodes[a].position - nodes[b].position).norm();
+    const auto it = learned.find(std::minmax(a, b));
+    return it == learned.end() ? straight : std::max(straight, it->second);
   };
   const auto inEnds = [](const Ends& e, RegionId r) { return std::find(e.regions.begin(), e.regions.end(), r) != e.regions.end(); };
-  const auto straight = [&](std::size_t a, std::size_t b) { return (position(a) - position(b)).norm(); };
+  const auto throughRegion = [&](std::size_t u, RegionId r, double at) {
+    if (inEnds(end, r)) push(u, g, at + lowerBound(u, g), r, false);
+    for (std::size_t v : members[r])
+      if (v != u) push(u, v, at + lowerBound(u, v), r, false);
+  };
 
   push(s, s, 0.0, RegionId{}, true);
   while (!open.empty()) {
@@ -273,9 +325,8 @@ Plan RoutePlanner::plan(const Pose2D& startPose, const PlanGoal& goal) const {
     open.pop();
     if (closed[e.node]) continue;
     if (!e.verified) {
-      const double c = e.from == s || e.node == g ? linkCost(e.region, e.from, e.node)
-                                                  : std::max(e.g - best[e.from], linkCost(e.region, e.from, e.node));
-      push(e.from, e.node, best[e.from] + c, e.region, true);
+      const auto& path = regionPath(e.region, e.from, e.node);
+      if (path) push(e.from, e.node, best[e.from] + std::max(e.g - best[e.from], polylineLength(*path)), e.region, true);
       continue;
     }
     closed[e.node] = true;
@@ -283,28 +334,24 @@ Plan RoutePlanner::plan(const Pose2D& startPose, const PlanGoal& goal) const {
     if (e.node == g) break;
     const double at = best[e.node];
     if (e.node == s) {
-      for (RegionId r : start.regions) {
-        if (inEnds(end, r)) push(s, g, at + straight(s, g), r, false);
-        for (std::size_t i = 0; i < nodes.size(); ++i)
-          if (nodes[i].region == r) push(s, i, at + straight(s, i), r, false);
-      }
+      for (RegionId r : start.regions) throughRegion(s, r, at);
       continue;
     }
-    if (inEnds(end, nodes[e.node].region)) push(e.node, g, at + straight(e.node, g), nodes[e.node].region, false);
-    for (const GraphEdgeView& edge : map_.graph.edges) {
-      if (edge.from != e.node && edge.to != e.node) continue;
-      const std::size_t v = edge.from == e.node ? edge.to : edge.from;
-      if (edge.throughGateway())
-        push(e.node, v, at + edge.costM, RegionId{}, true);
-      else
-        push(e.node, v, at + std::max(edge.costM, straight(e.node, v)), edge.region, false);
+    throughRegion(e.node, nodes[e.node].region, at);
+    if (nodes[e.node].passage != kNoPassage) {
+      for (std::size_t v : passageNodes[nodes[e.node].passage])
+        if (v != e.node) push(e.node, v, at + (nodes[v].position - nodes[e.node].position).norm(), RegionId{}, true);
+    } else {
+      for (const GraphEdgeView& edge : map_.graph.edges)
+        if (edge.throughGateway() && (edge.from == e.node || edge.to == e.node))
+          push(e.node, edge.from == e.node ? edge.to : edge.from, at + edge.costM, RegionId{}, true);
     }
   }
   if (!via[g]) {
     std::string from, to;
     for (RegionId r : start.regions) from += (from.empty() ? "" : ", ") + std::to_string(r.value());
     for (RegionId r : end.regions) to += (to.empty() ? "" : ", ") + std::to_string(r.value());
-    throw NoPathError("no route from region " + from + " to region " + to + " in the RG graph");
+    throw NoPathError("no route from region " + from + " to region " + to + " in the RG map");
   }
 
   // The legs in driving order, as one polyline whose points know the region of the leg that
@@ -319,7 +366,9 @@ Plan RoutePlanner::plan(const Pose2D& startPose, const PlanGoal& goal) const {
   std::vector<std::size_t> pointRegion{0};
   for (std::size_t k = 1; k < order.size(); ++k) {
     const std::size_t a = order[k - 1], b = order[k];
-    if (b < s) out.route.push_back(nodes[b]);
+    if (b < graphNodes) out.route.push_back(map_.graph.nodes[b]);
+    if (nodes[b].onGateway && b >= graphNodes)
+      out.route.push_back({passages()[nodes[b].passage].gateway, nodes[b].crossing, nodes[b].region, nodes[b].position});
     const Via& step = *via[b];
     const RegionId region = step.region.isNone() ? nodes[b].region : step.region;
     if (regions.empty() || regions.back() != region) regions.push_back(region);
