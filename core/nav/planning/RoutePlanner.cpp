@@ -12,6 +12,7 @@
 #include "core/lines/ScanPoints.h"
 #include "core/nav/grid/PlanningErrors.h"
 #include "core/nav/planning/RegionGrid.h"
+#include "core/nav/planning/RegionOverlaps.h"
 #include "core/nav/planning/TargetSpacing.h"
 
 namespace rgnav {
@@ -102,6 +103,7 @@ void RoutePlanner::setMap(PlanningMap map) {
   map_ = std::move(map);
   if (!same) {
     regions_.clear();
+    passages_.reset();
     return;
   }
   for (auto it = regions_.begin(); it != regions_.end();) {
@@ -202,122 +204,223 @@ RoutePlanner::Ends RoutePlanner::goalOf(const PlanGoal& goal, const Eigen::Vecto
   throw InvalidArgumentError("route planner: unknown goal kind");
 }
 
+const std::vector<RoutePlanner::Passage>& RoutePlanner::passages() const {
+  if (passages_) return *passages_;
+  std::vector<Passage> out;
+  for (std::size_t i = 0; i < map_.regions.size(); ++i)
+    for (std::size_t k = i + 1; k < map_.regions.size(); ++k) {
+      const RegionView &a = map_.regions[i], &b = map_.regions[k];
+      for (const Eigen::Vector2d& p : overlapTransfers(entry(a.summary.id).grid, a.summary.frame, entry(b.summary.id).grid,
+                                                       b.summary.frame, config_.overlapSampleM, config_.overlapMinAreaM2))
+        out.push_back({GatewayId{}, {{p, a.summary.id, 0}, {p, b.summary.id, 0}}});
+    }
+  for (const GatewayView& gateway : map_.gateways) {
+    if (!gateway.sideA.isNone() && !gateway.sideB.isNone()) continue;  // in the RG graph
+    Passage passage{gateway.id, {}};
+    for (std::size_t c = 0; c < gateway.crossingPoints.size(); ++c)
+      for (const RegionView& r : map_.regions)
+        if (entry(r.summary.id).nearestFree(gateway.crossingPoints[c], config_.crossingSnapM))
+          passage.ends.push_back({gateway.crossingPoints[c], r.summary.id, c});
+    if (passage.ends.size() > 1) out.push_back(std::move(passage));
+  }
+  return passages_.emplace(std::move(out));
+}
+
 Plan RoutePlanner::plan(const Pose2D& startPose, const PlanGoal& goal) const {
   const Ends start = startOf(startPose);
   const Ends end = goalOf(goal, start.point);
-  const auto& nodes = map_.graph.nodes;
-  const std::size_t s = nodes.size(), g = nodes.size() + 1;
-  const auto position = [&](std::size_t i) -> Eigen::Vector2d {
-    return i == s ? start.point : (i == g ? end.point : nodes[i].position);
-  };
 
-  // The region path of a link, cached per region for crossing point pairs. A crossing point in a
-  // blocked cell (inflation at a narrow door) is moved to the nearest free cell.
-  std::map<std::pair<std::size_t, std::size_t>, std::pair<RegionId, std::optional<Polyline>>> endLinks;
+  // The search's nodes: the RG graph's crossing points, the ends of every other passage, the
+  // start and the goal.
+  constexpr std::size_t kNoPassage = std::numeric_limits<std::size_t>::max();
+  struct Node {
+    Eigen::Vector2d position;
+    RegionId region;
+    bool onGateway = false;           // a crossing point (to be placed on a free cell)
+    std::size_t passage = kNoPassage;  // index in passages(); none for RG graph nodes, start, goal
+    std::size_t crossing = 0;         // a gateway passage's: the crossing point's index
+  };
+  std::vector<Node> nodes;
+  for (const GraphNodeView& n : map_.graph.nodes) nodes.push_back({n.position, n.region, true});
+  const std::size_t graphNodes = nodes.size();
+  std::vector<std::vector<std::size_t>> passageNodes(passages().size());
+  for (std::size_t k = 0; k < passages().size(); ++k)
+    for (std::size_t e = 0; e < passages()[k].ends.size(); ++e) {
+      passageNodes[k].push_back(nodes.size());
+      const PassageEnd& end = passages()[k].ends[e];
+      nodes.push_back({end.position, end.region, !passages()[k].gateway.isNone(), k, end.crossing});
+    }
+  const std::size_t s = nodes.size(), g = nodes.size() + 1;
+  nodes.push_back({start.point, RegionId{}, false});
+  nodes.push_back({end.point, RegionId{}, false});
+  std::map<RegionId, std::vector<std::size_t>> members;
+  for (std::size_t i = 0; i < s; ++i) members[nodes[i].region].push_back(i);
+  std::map<std::pair<std::size_t, std::size_t>, double> learned;  // region edges' learned costs
+  for (const GraphEdgeView& e : map_.graph.edges)
+    if (!e.throughGateway()) learned[std::minmax(e.from, e.to)] = e.costM;
+
+  // The region path of a link, cached per region for pairs of graph and transfer nodes. A crossing
+  // point in a blocked cell (inflation at a narrow door) is moved to the nearest free cell.
+  std::map<std::pair<std::size_t, std::size_t>, std::optional<Polyline>> endLinks;
   const auto regionPath = [&](RegionId region, std::size_t a, std::size_t b) -> const std::optional<Polyline>& {
     RegionEntry& r = entry(region);
-    const bool crossings = a < s && b < s;
-    if (crossings)
+    const bool cached = a < s && b < s;
+    if (cached)
       if (const auto it = r.between.find({a, b}); it != r.between.end()) return it->second;
     const auto placed = [&](std::size_t i) -> std::optional<Eigen::Vector2d> {
-      return i < s ? r.nearestFree(nodes[i].position, config_.crossingSnapM) : std::optional(position(i));
+      return nodes[i].onGateway ? r.nearestFree(nodes[i].position, config_.crossingSnapM) : std::optional(nodes[i].position);
     };
     std::optional<Polyline> found;
     const auto from = placed(a), to = placed(b);
     if (from && to) found = r.path(*from, *to);
     if (found) {
-      if (a < s) found->insert(found->begin(), nodes[a].position);
-      if (b < s) found->push_back(nodes[b].position);
+      if (nodes[a].onGateway) found->insert(found->begin(), nodes[a].position);
+      if (nodes[b].onGateway) found->push_back(nodes[b].position);
     }
-    if (crossings) return r.between.emplace(std::pair{a, b}, std::move(found)).first->second;
-    return endLinks.insert_or_assign({a, b}, std::pair{region, std::move(found)}).first->second.second;
+    if (cached) return r.between.emplace(std::pair{a, b}, std::move(found)).first->second;
+    return endLinks.insert_or_assign({a, b}, std::move(found)).first->second;
   };
 
-  // A* over crossing points plus start and goal; costs are discovered as edges are relaxed.
+  // Lazy A* (Cohen, Phillips, Likhachev, "Planning Single-Arm Manipulations with n-Arm Robots",
+  // SoCS 2014: lazy weighted A*, here unweighted): a link through a region enters the open list
+  // with its lower bound (its learned cost or straight-line length) and its region path is planned
+  // only when that entry comes first, so that region paths are planned for the few links near the
+  // best route, not for every link relaxed.
+  struct Entry {
+    double f = 0.0, g = 0.0;
+    std::size_t node = 0, from = 0;
+    RegionId region;        // none: through a gateway or an overlap transfer
+    bool verified = false;  // g is the true cost via `from`
+    bool operator>(const Entry& o) const { return f > o.f; }
+  };
   struct Via {
     std::size_t from = 0;
-    RegionId region;  // none: through a gateway
+    RegionId region;
   };
-  std::vector<double> cost(nodes.size() + 2, kUnreachable);
-  std::vector<std::optional<Via>> via(nodes.size() + 2);
-  using Item = std::pair<double, std::size_t>;
-  std::priority_queue<Item, std::vector<Item>, std::greater<>> open;
-  const auto heuristic = [&](std::size_t i) { return (position(i) - end.point).norm(); };
-  const auto relax = [&](std::size_t from, std::size_t to, double edgeCost, RegionId region) {
-    if (!std::isfinite(edgeCost) || cost[from] + edgeCost >= cost[to]) return;
-    cost[to] = cost[from] + edgeCost;
-    via[to] = Via{from, region};
-    open.push({cost[to] + heuristic(to), to});
+  std::vector<double> best(nodes.size(), kUnreachable);  // best verified g
+  std::vector<bool> closed(nodes.size(), false);
+  std::vector<std::optional<Via>> via(nodes.size());
+  std::priority_queue<Entry, std::vector<Entry>, std::greater<>> open;
+  const auto heuristic = [&](std::size_t i) { return (nodes[i].position - end.point).norm(); };
+  const auto push = [&](std::size_t from, std::size_t to, double g, RegionId region, bool verified) {
+    if (!std::isfinite(g) || closed[to] || g >= best[to]) return;
+    if (verified) best[to] = g;
+    open.push({g + heuristic(to), g, to, from, region, verified});
   };
-  const auto linkCost = [&](RegionId region, std::size_t a, std::size_t b) {
-    const auto& path = regionPath(region, a, b);
-    return path ? polylineLength(*path) : kUnreachable;
+  const auto lowerBound = [&](std::size_t a, std::size_t b) {
+    const double straight = (nodes[a].position - nodes[b].position).norm();
+    const auto it = learned.find(std::minmax(a, b));
+    return it == learned.end() ? straight : std::max(straight, it->second);
   };
   const auto inEnds = [](const Ends& e, RegionId r) { return std::find(e.regions.begin(), e.regions.end(), r) != e.regions.end(); };
+  const auto throughRegion = [&](std::size_t u, RegionId r, double at) {
+    if (inEnds(end, r)) push(u, g, at + lowerBound(u, g), r, false);
+    for (std::size_t v : members[r])
+      if (v != u) push(u, v, at + lowerBound(u, v), r, false);
+  };
 
-  cost[s] = 0.0;
-  open.push({heuristic(s), s});
-  std::vector<bool> closed(nodes.size() + 2, false);
+  push(s, s, 0.0, RegionId{}, true);
   while (!open.empty()) {
-    const std::size_t u = open.top().second;
+    const Entry e = open.top();
     open.pop();
-    if (closed[u]) continue;
-    closed[u] = true;
-    if (u == g) break;
-    if (u == s) {
-      for (RegionId r : start.regions) {
-        if (inEnds(end, r)) relax(s, g, linkCost(r, s, g), r);
-        for (std::size_t i = 0; i < nodes.size(); ++i)
-          if (nodes[i].region == r) relax(s, i, linkCost(r, s, i), r);
-      }
+    if (closed[e.node]) continue;
+    if (!e.verified) {
+      const auto& path = regionPath(e.region, e.from, e.node);
+      if (path) push(e.from, e.node, best[e.from] + std::max(e.g - best[e.from], polylineLength(*path)), e.region, true);
       continue;
     }
-    if (inEnds(end, nodes[u].region)) relax(u, g, linkCost(nodes[u].region, u, g), nodes[u].region);
-    for (const GraphEdgeView& e : map_.graph.edges) {
-      if (e.from != u && e.to != u) continue;
-      const std::size_t v = e.from == u ? e.to : e.from;
-      if (closed[v]) continue;
-      if (e.throughGateway())
-        relax(u, v, e.costM, RegionId{});
-      else
-        relax(u, v, std::max(e.costM, linkCost(e.region, u, v)), e.region);
+    closed[e.node] = true;
+    if (e.node != s) via[e.node] = Via{e.from, e.region};
+    if (e.node == g) break;
+    const double at = best[e.node];
+    if (e.node == s) {
+      for (RegionId r : start.regions) throughRegion(s, r, at);
+      continue;
+    }
+    throughRegion(e.node, nodes[e.node].region, at);
+    if (nodes[e.node].passage != kNoPassage) {
+      for (std::size_t v : passageNodes[nodes[e.node].passage])
+        if (v != e.node) push(e.node, v, at + (nodes[v].position - nodes[e.node].position).norm(), RegionId{}, true);
+    } else {
+      for (const GraphEdgeView& edge : map_.graph.edges)
+        if (edge.throughGateway() && (edge.from == e.node || edge.to == e.node))
+          push(e.node, edge.from == e.node ? edge.to : edge.from, at + edge.costM, RegionId{}, true);
     }
   }
   if (!via[g]) {
     std::string from, to;
     for (RegionId r : start.regions) from += (from.empty() ? "" : ", ") + std::to_string(r.value());
     for (RegionId r : end.regions) to += (to.empty() ? "" : ", ") + std::to_string(r.value());
-    throw NoPathError("no route from region " + from + " to region " + to + " in the RG graph");
+    throw NoPathError("no route from region " + from + " to region " + to + " in the RG map");
   }
 
-  // The legs in driving order.
+  // The legs in driving order, as one polyline whose points know the region of the leg that
+  // reaches them (a gateway's leg: the region it leads into).
   std::vector<std::size_t> order{g};
   while (order.back() != s) order.push_back(via[order.back()]->from);
   std::reverse(order.begin(), order.end());
   Plan out;
   out.mapRevision = map_.revision;
-  out.startRegion = via[order[1]]->region.isNone() ? start.regions.front() : via[order[1]]->region;
-  out.goalRegion = via[g]->region;
-  std::vector<PathLeg> legs;
-  legs.push_back({out.startRegion, {start.given}});
+  std::vector<RegionId> regions;  // the regions passed, in driving order
+  std::vector<Eigen::Vector2d> points{start.point};
+  std::vector<std::size_t> pointRegion{0};
   for (std::size_t k = 1; k < order.size(); ++k) {
     const std::size_t a = order[k - 1], b = order[k];
-    if (b < s) out.route.push_back(nodes[b]);
+    if (b < graphNodes) out.route.push_back(map_.graph.nodes[b]);
+    if (nodes[b].onGateway && b >= graphNodes)
+      out.route.push_back({passages()[nodes[b].passage].gateway, nodes[b].crossing, nodes[b].region, nodes[b].position});
     const Via& step = *via[b];
-    PathLeg leg;
-    if (step.region.isNone()) {
-      leg = {nodes[b].region, {nodes[a].position, nodes[b].position}};
-    } else {
-      const std::optional<Polyline>& path = regionPath(step.region, a, b);
-      leg = {step.region, *path};
+    const RegionId region = step.region.isNone() ? nodes[b].region : step.region;
+    if (regions.empty() || regions.back() != region) regions.push_back(region);
+    const Polyline leg = step.region.isNone() ? Polyline{nodes[a].position, nodes[b].position} : *regionPath(region, a, b);
+    for (std::size_t i = 1; i < leg.size(); ++i) {
+      points.push_back(leg[i]);
+      pointRegion.push_back(regions.size() - 1);
     }
-    legs.push_back(std::move(leg));
   }
-  for (const PathLeg& leg : legs)
-    for (const Eigen::Vector2d& p : leg.points)
-      if (out.path.empty() || (p - out.path.back()).norm() > 1e-9) out.path.push_back(p);
+  // The start's point belongs to the first region.
+  pointRegion.front() = 0;
+
+  // String pulling across legs: a point is dropped while the shortcut past it stays free in the
+  // grids of the regions between its ends (checked every half cell: a shortcut may clip a blocked
+  // cell's corner by at most a quarter cell, inside the robot-radius inflation).
+  const auto freeIn = [&](const Eigen::Vector2d& p, std::size_t firstRegion, std::size_t lastRegion) {
+    for (std::size_t k = firstRegion; k <= lastRegion; ++k)
+      if (entry(regions[k]).freeAt(p)) return true;
+    return false;
+  };
+  const auto shortcutFree = [&](std::size_t i, std::size_t j) {
+    const Eigen::Vector2d a = points[i], b = points[j];
+    const int samples = std::max(1, static_cast<int>(std::ceil((b - a).norm() / (0.5 * config_.gridResolutionM))));
+    for (int k = 0; k <= samples; ++k)
+      if (!freeIn(a + (b - a) * (double(k) / samples), pointRegion[i], pointRegion[j])) return false;
+    return true;
+  };
+  std::vector<std::size_t> kept{0};
+  for (std::size_t i = 0; i + 1 < points.size();) {
+    std::size_t j = i + 1;
+    while (j + 1 < points.size() && shortcutFree(i, j + 1)) ++j;
+    kept.push_back(j);
+    i = j;
+  }
+  if (start.given != start.point) out.path.push_back(start.given);
+  for (std::size_t i : kept)
+    if (out.path.empty() || (points[i] - out.path.back()).norm() > 1e-9) out.path.push_back(points[i]);
   out.lengthM = polylineLength(out.path);
-  out.targets = targetsAlong(legs, config_.targetMinSpacingM, config_.targetMaxSpacingM, end.heading);
+  out.startRegion = regions.front();
+  out.goalRegion = regions.back();
+
+  // Targets, each in the first region from the previous target's on whose free cells it lies.
+  std::size_t current = 0;
+  for (const Pose2D& pose : targetsAlong(out.path, config_.targetMinSpacingM, config_.targetMaxSpacingM, end.heading)) {
+    for (std::size_t k = current; k < regions.size(); ++k)
+      if (entry(regions[k]).freeAt({pose.x, pose.y})) {
+        current = k;
+        break;
+      }
+    out.targets.push_back({pose, regions[current]});
+  }
+  if (!out.targets.empty()) out.targets.back().region = out.goalRegion;
   return out;
 }
 

@@ -5,6 +5,7 @@
 // just outside the map is placed in it.
 #include <cppunit/extensions/HelperMacros.h>
 
+#include <algorithm>
 #include <cmath>
 
 #include "core/nav/grid/PlanningErrors.h"
@@ -38,6 +39,7 @@ class RoutePlannerTest : public CppUnit::TestFixture {
   CPPUNIT_TEST(anObjectGoalFacesTheObject);
   CPPUNIT_TEST(badGoalsAndStartsAreTypedNoPath);
   CPPUNIT_TEST(aStartJustOutsideIsPlacedInTheNearestRegion);
+  CPPUNIT_TEST(aGatewayWithAnUnknownSideStillJoinsItsRegions);
   CPPUNIT_TEST_SUITE_END();
 
  public:
@@ -112,6 +114,36 @@ class RoutePlannerTest : public CppUnit::TestFixture {
     assertNoPath({1.0, 1.0, 0.0}, PlanGoal::at({1.0, 1.9}), "obstacle");  // 0.1 m from the hallway wall
     assertNoPath({1.0, -5.0, 0.0}, PlanGoal::at({9.0, 4.5}), "start");
     CPPUNIT_ASSERT_THROW(planner_.plan({1.0, 1.0, 0.0}, PlanGoal::at({NAN, 1.0})), rgnav::InvalidArgumentError);
+  }
+
+  // Door 12 as the kernel holds it before it knows the room behind it: out of the RG graph, one
+  // side unknown. Its crossing points still lie in the hallway's and the room's free cells.
+  void aGatewayWithAnUnknownSideStillJoinsItsRegions() {
+    const Plan before = planner_.plan({1.0, 1.0, 0.0}, PlanGoal::at({9.0, 4.5}));
+    const rgnav::GatewayId door = before.route.front().gateway;
+    rgnav::PlanningMap map = rgnav::planningMapOf(*kernel_);
+    for (auto& g : map.gateways)
+      if (g.id == door) g.sideB = RegionId{};
+    rgnav::GraphView graph;
+    std::vector<std::size_t> index(map.graph.nodes.size());
+    for (std::size_t i = 0; i < map.graph.nodes.size(); ++i)
+      if (map.graph.nodes[i].gateway != door) {
+        index[i] = graph.nodes.size();
+        graph.nodes.push_back(map.graph.nodes[i]);
+      }
+    for (auto e : map.graph.edges)
+      if (map.graph.nodes[e.from].gateway != door && map.graph.nodes[e.to].gateway != door) {
+        e.from = index[e.from];
+        e.to = index[e.to];
+        graph.edges.push_back(e);
+      }
+    map.graph = graph;
+    map.revision += 1;
+    planner_.setMap(map);
+    const Plan plan = planner_.plan({1.0, 1.0, 0.0}, PlanGoal::at({9.0, 4.5}));
+    CPPUNIT_ASSERT(plan.goalRegion == before.goalRegion);
+    CPPUNIT_ASSERT(std::any_of(plan.route.begin(), plan.route.end(), [&](const auto& n) { return n.gateway == door; }));
+    CPPUNIT_ASSERT_DOUBLES_EQUAL(before.lengthM, plan.lengthM, 0.5);
   }
 
   void aStartJustOutsideIsPlacedInTheNearestRegion() {

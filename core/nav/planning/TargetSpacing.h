@@ -5,7 +5,8 @@
 // are divided evenly. Where a corner is dropped the straight line between the targets cuts it by
 // less than the minimum spacing; the path polyline keeps the exact geometry. A target's heading is
 // the direction to the next target; the goal keeps the heading of the last stretch unless one is
-// given. Every target carries the region of the leg it lies on.
+// given. The goal is always the last target; when the last corner before it lies too close, the
+// goal replaces that corner if the gap to the target before stays within the maximum.
 #pragma once
 
 #include <Eigen/Core>
@@ -13,18 +14,13 @@
 #include <span>
 #include <vector>
 
-#include "core/nav/planning/RoutePlanner.h"
+#include "core/common/Pose2D.h"
 
 namespace rgnav {
 
-struct PathLeg {
-  RegionId region;
-  std::vector<Eigen::Vector2d> points;  // map frame; the first is the previous leg's last point
-};
-
-// Targets along `legs` (the start itself is not a target). Throws InvalidArgumentError for
-// spacings with 0 < min <= max not holding.
-std::vector<TargetPose> targetsAlong(std::span<const PathLeg> legs, double minSpacingM, double maxSpacingM,
-                                     std::optional<double> goalHeading);
+// Targets along `path` (start first; the start itself is not a target). Throws
+// InvalidArgumentError for spacings with 0 < min <= max not holding.
+std::vector<Pose2D> targetsAlong(std::span<const Eigen::Vector2d> path, double minSpacingM, double maxSpacingM,
+                                 std::optional<double> goalHeading);
 
 }  // namespace rgnav

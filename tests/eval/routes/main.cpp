@@ -3,13 +3,15 @@
 // 5.4)? For each furnished IPA floor plan (floorplans/SOURCES.md) the simulator's room tour is
 // mapped in process (as "rgctl eval rooms --in-process": SLAM -> gateway detection -> RG Mapping
 // Kernel, MappingRun.h); then --pairs random start/goal pairs (fixed seed), each pair's points in
-// two different ground-truth rooms and both mapped (inside a region's freespace and free in the
-// whole floor's grid), are planned twice on the same map:
+// two different ground-truth rooms and both mapped (where the robot can stand in a region's planning
+// grid and in the whole floor's grid), are planned twice on the same map:
 //   - RG: RoutePlanner (RG-graph route, framed-quadtree paths in the regions it passes);
 //   - floor: one FramedQuadtreePlanner over the whole floor's grid (FloorGrid.h), same robot
 //     radius, resolution and wall costs.
-// Each planner is timed over all pairs after a first pass that builds its grids (the RG planner
-// builds region grids on first use; the floor tree is built once; both build times are printed).
+// Each planner is timed over all pairs; the RG planner's region grids are built while sampling
+// (regionsAt) and the floor tree once, before (its build time is printed). The RG planner runs
+// twice: the first pass also plans the region paths between crossing points it caches; the second
+// is timed.
 // Prints a line per map and, last,
 //   routes: maps=… pairs=… found=… length_ratio_mean=… speedup=…
 // length_ratio = RG path length / floor path length, over pairs both found; speedup = floor time
@@ -23,12 +25,15 @@
 
 #include "core/gateways/classify/HmmModelFile.h"
 #include "core/lines/ScanPoints.h"
+#include "core/nav/grid/PlanningErrors.h"
 #include "core/nav/planning/FramedQuadtreePlanner.h"
 #include "core/nav/planning/KernelPlanningMap.h"
 #include "core/nav/planning/RoutePlanner.h"
 #include "core/sim/LoadedWorld.h"
 #include "tests/eval/rooms/MappingRun.h"
+#include "core/rgmap/export/RgMapSnapshot.h"
 #include "tests/eval/routes/FloorGrid.h"
+#include "tests/eval/routes/RoutePictures.h"
 #include "tests/eval/split/IpaSplit.h"
 #include "tools/common/CommandLine.h"
 
@@ -43,6 +48,8 @@ struct Options {
   std::uint64_t seed = 1;
   std::string models = "config/gateways/gateway-hmms.txt";
   std::string split = "config/eval/ipa-split.yaml";
+  bool list = false;
+  std::string outDir;
 };
 
 struct Totals {
@@ -66,20 +73,13 @@ struct Totals {
 
 double seconds(Clock::duration d) { return std::chrono::duration<double>(d).count(); }
 
-// Whether `p` (map frame) lies in the freespace of a region of the map.
-bool mapped(const PlanningMap& map, const Eigen::Vector2d& p) {
-  return std::any_of(map.regions.begin(), map.regions.end(), [&](const RegionView& r) {
-    return r.freespace.isFreeAt(transformPoint(inverse(r.summary.frame), p));
-  });
-}
-
 struct Pair {
   Eigen::Vector2d start, goal;  // map frame
 };
 
 // Random pairs in different rooms, both mapped and free on the floor grid; fewer if the floor
 // has too few such points.
-std::vector<Pair> samplePairs(const LoadedWorld& world, const Pose2D& mapToWorld, const PlanningMap& map,
+std::vector<Pair> samplePairs(const LoadedWorld& world, const Pose2D& mapToWorld, const RoutePlanner& rg,
                               const OccupancyGrid& floor, std::size_t count, std::uint64_t seed) {
   const GroundTruth& truth = *world.truth;
   std::mt19937_64 rng(seed);
@@ -93,7 +93,7 @@ std::vector<Pair> samplePairs(const LoadedWorld& world, const Pose2D& mapToWorld
       const WorldPoint w = world.grid.center(c);
       const Eigen::Vector2d p = transformPoint(worldToMap, {w.x, w.y});
       const auto cell = floor.cellOf({p.x(), p.y()});
-      if (!cell || floor.blocked(*cell) || !mapped(map, p)) continue;
+      if (!cell || floor.blocked(*cell) || rg.regionsAt(p).empty()) continue;
       return std::pair{p, room};
     }
     return std::nullopt;
@@ -107,6 +107,27 @@ std::vector<Pair> samplePairs(const LoadedWorld& world, const Pose2D& mapToWorld
   return out;
 }
 
+// <stem>_routes.png: the six pairs with the largest length ratio; <stem>_quadtree.png: the
+// quadtree of the region of the first pair's start.
+void writePictures(const std::string& stem, const RgMapSnapshot& snapshot, const PlanningMap& map,
+                   const RoutePlannerConfig& config, const std::vector<Pair>& pairs,
+                   const std::vector<ComparedPaths>& paths, const std::vector<std::optional<double>>& rgLength,
+                   const std::vector<std::optional<double>>& floorLength) {
+  std::vector<std::pair<double, std::size_t>> ratios;
+  for (std::size_t i = 0; i < pairs.size(); ++i)
+    if (rgLength[i] && floorLength[i] && *floorLength[i] > 0.0) ratios.emplace_back(*rgLength[i] / *floorLength[i], i);
+  std::sort(ratios.rbegin(), ratios.rend());
+  std::vector<ComparedPaths> worst;
+  for (std::size_t k = 0; k < std::min<std::size_t>(6, ratios.size()); ++k) worst.push_back(paths[ratios[k].second]);
+  writeRoutesPicture(stem + "_routes.png", snapshot, worst);
+  RoutePlanner locate(config);
+  locate.setMap(map);
+  const std::vector<RegionId> regions = locate.regionsAt(pairs.front().start);
+  for (const RegionView& region : map.regions)
+    if (!regions.empty() && region.summary.id == regions.front())
+      writeQuadtreePicture(stem + "_quadtree.png", region, config, pairs.front().start);
+}
+
 Totals evaluate(const std::string& mapPath, const Options& options, const std::optional<HmmClassifier>& classifier) {
   const LoadedWorld world = loadWorld(mapPath);
   if (!world.truth) throw FileError(mapPath + ": no ground-truth rooms beside it");
@@ -115,15 +136,16 @@ Totals evaluate(const std::string& mapPath, const Options& options, const std::o
   setup.pipeline = shippedPipelineConfig();
   PlanningMap map;
   OccupancyGrid floor;
+  std::optional<RgMapSnapshot> snapshot;
   setup.atEnd = [&](const RgMappingKernel& kernel) {
     map = planningMapOf(kernel);
+    if (!options.outDir.empty()) snapshot = snapshotOf(kernel);
     floor = floorGridOf(kernel.state(), config.gridResolutionM, config.robotRadiusM);
   };
   const MappingRun run = mapRoomTour(world.grid, *world.truth, setup, classifier);
-  const std::vector<Pair> pairs = samplePairs(world, run.mapToWorld, map, floor, options.pairs, options.seed);
-
   RoutePlanner rg(config);
   rg.setMap(map);
+  const std::vector<Pair> pairs = samplePairs(world, run.mapToWorld, rg, floor, options.pairs, options.seed);
   const auto floorBuildStart = Clock::now();
   const FramedQuadtreePlanner whole(floor, config.region);
   const double floorBuild = seconds(Clock::now() - floorBuildStart);
@@ -134,8 +156,11 @@ Totals evaluate(const std::string& mapPath, const Options& options, const std::o
   // The first RG pass builds the region grids; the second is timed.
   const auto rgStart = Clock::now();
   std::vector<std::optional<double>> rgLength(pairs.size());
+  std::vector<ComparedPaths> paths(pairs.size());
   for (std::size_t i = 0; i < pairs.size(); ++i) try {
-      rgLength[i] = rg.plan({pairs[i].start.x(), pairs[i].start.y(), 0.0}, PlanGoal::at(pairs[i].goal)).lengthM;
+      const Plan plan = rg.plan({pairs[i].start.x(), pairs[i].start.y(), 0.0}, PlanGoal::at(pairs[i].goal));
+      rgLength[i] = plan.lengthM;
+      paths[i].rg = plan.path;
     } catch (const NoPathError& e) {
       std::printf("#   RG no path (%.2f, %.2f) -> (%.2f, %.2f): %s\n", pairs[i].start.x(), pairs[i].start.y(),
                   pairs[i].goal.x(), pairs[i].goal.y(), e.what());
@@ -151,10 +176,15 @@ Totals evaluate(const std::string& mapPath, const Options& options, const std::o
   std::vector<std::optional<double>> floorLength(pairs.size());
   const auto floorStart = Clock::now();
   for (std::size_t i = 0; i < pairs.size(); ++i) try {
-      floorLength[i] = whole.plan(toCells(pairs[i].start), toCells(pairs[i].goal)).length * floor.resolution();
+      const CellUnitPath path = whole.plan(toCells(pairs[i].start), toCells(pairs[i].goal));
+      floorLength[i] = path.length * floor.resolution();
+      for (const Eigen::Vector2d& c : path.points)
+        paths[i].floor.push_back({floor.origin().x + c.x() * floor.resolution(), floor.origin().y + c.y() * floor.resolution()});
     } catch (const Error&) {
     }
   const double floorSeconds = seconds(Clock::now() - floorStart);
+  if (snapshot && !pairs.empty()) writePictures(options.outDir + "/" + ipaMapName(mapPath), *snapshot, map, config,
+                                                pairs, paths, rgLength, floorLength);
 
   Totals t;
   t.maps = 1;
@@ -168,6 +198,10 @@ Totals evaluate(const std::string& mapPath, const Options& options, const std::o
       ++t.compared;
       t.ratioSum += *rgLength[i] / *floorLength[i];
     }
+    if (options.list)
+      std::printf("#   pair %zu (%.2f, %.2f) -> (%.2f, %.2f): rg=%.2f m floor=%.2f m\n", i, pairs[i].start.x(),
+                  pairs[i].start.y(), pairs[i].goal.x(), pairs[i].goal.y(), rgLength[i].value_or(-1.0),
+                  floorLength[i].value_or(-1.0));
   }
   std::printf("%-28s regions=%zu gateways=%zu pairs=%zu found=%zu floor_found=%zu length_ratio_mean=%.3f "
               "rg_ms=%.3f floor_ms=%.3f speedup=%.1f rg_first_pass_s=%.2f floor_build_s=%.2f floor_cells=%dx%d\n",
@@ -191,11 +225,14 @@ int main(int argc, char** argv) {
       ("pairs", po::value(&options.pairs)->default_value(options.pairs), "start/goal pairs per map")
       ("seed", po::value(&options.seed)->default_value(options.seed), "pair sampling seed")
       ("models", po::value(&options.models)->default_value(options.models), "gateway HMMs (used if the file exists)")
-      ("split", po::value(&options.split)->default_value(options.split), "the IPA maps' tuning/check split");
+      ("split", po::value(&options.split)->default_value(options.split), "the IPA maps' tuning/check split")
+      ("list", po::bool_switch(&options.list), "print every pair with both path lengths")
+      ("out", po::value(&options.outDir), "write pictures of the worst pairs and of a region's quadtree here");
   po::positional_options_description positional;
   positional.add("map", -1);
   try {
     if (!parseCommandLine(argc, argv, desc, positional)) return 0;
+    if (!options.outDir.empty()) std::filesystem::create_directories(options.outDir);
     std::optional<HmmClassifier> classifier;
     if (std::filesystem::exists(options.models)) classifier = loadHmmModels(options.models);
     const SplitTotals<Totals> bySet = evaluateMaps<Totals>(
