@@ -5,6 +5,11 @@
 
 namespace rgnav {
 
+// describe() lists every field (RoutePlannerConfigYaml.h): a field added to either struct stops the
+// build here until it is listed there and in config/modules/pathplanning.yaml.
+static_assert(sizeof(FramedQuadtreePlannerConfig) == 2 * sizeof(double));
+static_assert(sizeof(RoutePlannerConfig) == 8 * sizeof(double) + sizeof(FramedQuadtreePlannerConfig));
+
 RoutePlannerConfig parseRoutePlannerConfig(const std::string& yamlText, const std::string& path) {
   return parseChecked<RoutePlannerConfig>(yamlText, path, [](const RoutePlannerConfig& config) { validate(config); });
 }

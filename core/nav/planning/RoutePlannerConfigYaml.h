@@ -21,6 +21,9 @@ void describe(V& v, RoutePlannerConfig& c) {
   v.field("robot_radius_m", c.robotRadiusM);
   v.field("grid_resolution_m", c.gridResolutionM);
   v.field("start_snap_m", c.startSnapM);
+  v.field("crossing_snap_m", c.crossingSnapM);
+  v.field("overlap_sample_m", c.overlapSampleM);
+  v.field("overlap_min_area_m2", c.overlapMinAreaM2);
   v.field("target_min_spacing_m", c.targetMinSpacingM);
   v.field("target_max_spacing_m", c.targetMaxSpacingM);
   v.section("region", c.region);
