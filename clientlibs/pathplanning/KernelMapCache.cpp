@@ -26,10 +26,10 @@ bool KernelMapCache::refresh() {
   const MapSummaryView summary = kernel_.summary();
   if (filled_ && summary.lastEvent == revision_) return false;
   RegionChanges changes;
-  if (filled_) {
+  if (filled_ && summary.lastEvent > revision_) {
     changes = regionChanges(eventsBetween(kernel_, revision_, summary.lastEvent));
   } else {
-    changes.all = true;
+    changes.all = true;  // the first fetch, or a kernel whose map went back (restored from an older checkpoint)
   }
   std::map<RegionId, RegionView> regions;
   for (const RegionSummaryView& s : kernel_.regions()) {

@@ -1,11 +1,12 @@
 // KernelMapCache: the RG Mapping Kernel's map as a PlanningMap, as the PathPlanning module and
 // rgnav-plan take it (regions by ID with their line maps, freespace and objects; gateways; the RG
-// graph with its learned costs), fetched through the kernel's client library and cached by map revision, the
-// kernel's last event ID (RgMapSummary.lastEvent). refresh() asks only for the summary while the
-// revision stays; when it changed, it fetches the region list, the gateways and the graph, and
-// again only the regions that are new, whose summary changed, or that an event since the cached
-// revision names (RegionChanges.h). Scans stacked into the current region are no event: the
-// planner sees them at the kernel's next event.
+// graph with its learned costs), fetched through the kernel's client library and cached by map
+// revision, the kernel's last event ID (RgMapSummary.lastEvent). refresh() asks only for the
+// summary while the revision stays; when it changed, it fetches the region list, the gateways and
+// the graph, and again only the regions that are new, whose summary changed, or that an event
+// since the cached revision names (RegionChanges.h); all of them when the revision went back (a
+// kernel restored from an older checkpoint). Scans stacked into the current region are no event:
+// the planner sees them at the kernel's next event.
 #pragma once
 
 #include <cstddef>
