@@ -4,11 +4,13 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <optional>
 #include <sstream>
 
 #include "core/nav/grid/PlanningErrors.h"
 #include "core/nav/planning/PathSmoothing.h"
+#include "core/nav/planning/SegmentVisibility.h"
 #include "core/raster/DistanceField.h"
 
 namespace rgnav {
@@ -100,46 +102,27 @@ CellUnitPath FramedQuadtreePlanner::plan(const Eigen::Vector2d& start, const Eig
     return id == startId ? startCost : id == goalId ? goalCost : nodeCost_[static_cast<std::size_t>(id)];
   };
   const auto later = [](const Open& a, const Open& b) { return a.f > b.f || (a.f == b.f && a.g < b.g); };
-
-  heap_.clear();
-  CellUnitPath path;
-  const auto relax = [&](std::int32_t from, double fromG, std::int32_t to) {
-    NodeState& s = state_[static_cast<std::size_t>(to)];
-    if (s.seen == search_ && s.closed == search_) return;
-    const Eigen::Vector2d& p = position(to);
-    double step = (p - position(from)).norm();
-    if (costs) step *= 1.0 + 0.5 * (costOf(from) + costOf(to));
-    const double g = fromG + step;
-    if (s.seen == search_ && s.g <= g) return;
-    s = {g, from, search_, 0};
-    heap_.push_back({g + (goal - p).norm(), g, to});
+  const auto stateOf = [&](std::int32_t id) -> NodeState& { return state_[static_cast<std::size_t>(id)]; };
+  const auto closed = [&](std::int32_t id) { return stateOf(id).closed == search_; };
+  const auto edgeCost = [&](std::int32_t a, std::int32_t b) {
+    const double length = (position(b) - position(a)).norm();
+    return costs ? length * (1.0 + 0.5 * (costOf(a) + costOf(b))) : length;
+  };
+  const auto push = [&](std::int32_t id, double g) {
+    heap_.push_back({g + (goal - position(id)).norm(), g, id});
     std::push_heap(heap_.begin(), heap_.end(), later);
   };
-  const auto relaxFrame = [&](std::int32_t from, double fromG, std::int32_t quad) {
+  // Calls visit(n) for every graph neighbour n of node `id`: the rest of its quad's frame (with
+  // start and goal when they lie in that quad) and its 8 neighbouring cells in other quads.
+  const auto forEachNeighbour = [&](std::int32_t id, auto&& visit) {
+    const std::int32_t quad = id == startId ? startQuad : id == goalId ? goalQuad : tree_.nodeQuad(id);
     const FramedQuadtree::Quad& q = tree_.quads()[static_cast<std::size_t>(quad)];
     for (std::int32_t n = q.firstNode; n < q.firstNode + q.nodeCount; ++n)
-      if (n != from) relax(from, fromG, n);
-    if (quad == goalQuad) relax(from, fromG, goalId);
-  };
-
-  state_[static_cast<std::size_t>(startId)] = {0.0, -1, search_, 0};
-  heap_.push_back({(goal - start).norm(), 0.0, startId});
-  while (!heap_.empty()) {
-    std::pop_heap(heap_.begin(), heap_.end(), later);
-    const Open top = heap_.back();
-    heap_.pop_back();
-    NodeState& s = state_[static_cast<std::size_t>(top.node)];
-    if (s.closed == search_ || top.g > s.g) continue;
-    s.closed = search_;
-    ++path.expansions;
-    if (top.node == goalId) break;
-    if (top.node == startId) {
-      relaxFrame(startId, top.g, startQuad);
-      continue;
-    }
-    const std::int32_t quad = tree_.nodeQuad(top.node);
-    relaxFrame(top.node, top.g, quad);
-    const CellIndex c = tree_.nodeCell(top.node);
+      if (n != id) visit(n);
+    if (quad == goalQuad && id != goalId) visit(goalId);
+    if (quad == startQuad && id != startId) visit(startId);
+    if (id >= nodes) return;
+    const CellIndex c = tree_.nodeCell(id);
     for (int dy = -1; dy <= 1; ++dy)
       for (int dx = -1; dx <= 1; ++dx) {
         const std::int32_t n = tree_.nodeOf({c.col + dx, c.row + dy});
@@ -147,8 +130,49 @@ CellUnitPath FramedQuadtreePlanner::plan(const Eigen::Vector2d& start, const Eig
         // A diagonal step between cell centres is free unless it squeezes between two blocked
         // cells (segmentFree's rule at a grid vertex).
         if (dx != 0 && dy != 0 && grid_.blocked({c.col + dx, c.row}) && grid_.blocked({c.col, c.row + dy})) continue;
-        relax(top.node, top.g, n);
+        visit(n);
       }
+  };
+
+  const bool anyAngle = !costs;  // Lazy Theta*; with wall costs plain A*, whose edges carry the costs
+  heap_.clear();
+  CellUnitPath path;
+  stateOf(startId) = {0.0, -1, search_, 0};
+  push(startId, 0.0);
+  while (!heap_.empty()) {
+    std::pop_heap(heap_.begin(), heap_.end(), later);
+    const Open top = heap_.back();
+    heap_.pop_back();
+    NodeState& s = stateOf(top.node);
+    if (s.closed == search_ || top.g != s.g) continue;
+    if (anyAngle && s.parent >= 0 && !segmentFree(grid_, position(s.parent), position(top.node))) {
+      // Lazy Theta*: the assumed line of sight from the parent's parent is blocked; the best
+      // expanded neighbour becomes the parent and the node waits its turn again with that g.
+      s.g = std::numeric_limits<double>::infinity();
+      forEachNeighbour(top.node, [&](std::int32_t n) {
+        if (!closed(n)) return;
+        const double g = stateOf(n).g + edgeCost(n, top.node);
+        if (g < s.g) {
+          s.g = g;
+          s.parent = n;
+        }
+      });
+      push(top.node, s.g);
+      continue;
+    }
+    s.closed = search_;
+    ++path.expansions;
+    if (top.node == goalId) break;
+    forEachNeighbour(top.node, [&](std::int32_t to) {
+      NodeState& t = stateOf(to);
+      if (t.seen == search_ && t.closed == search_) return;
+      // Lazy Theta*: assume a line of sight from this node's parent; checked when `to` is expanded.
+      const std::int32_t parent = anyAngle && s.parent >= 0 ? s.parent : top.node;
+      const double g = stateOf(parent).g + edgeCost(parent, to);
+      if (t.seen == search_ && t.g <= g) return;
+      t = {g, parent, search_, 0};
+      push(to, g);
+    });
   }
   if (state_[static_cast<std::size_t>(goalId)].closed != search_)
     throw NoPathError("framed-quadtree planner: no path from " + pointName(start) + " to " + pointName(goal));

@@ -5,13 +5,20 @@
 // Graph: a node's neighbours are the other frame cells of its quad (a straight segment inside a
 // free square, any direction) and its 8 neighbouring cells in other quads; start and goal join as
 // temporary nodes linked to the frame of their quad (and to each other when they share one).
-// Smoothing: greedy string pulling (drop intermediate points while the shortcut stays free), then
-// bends moved from cell centres onto the obstacle corners they wrap around while that shortens the
-// path. Every step only shortens the graph's optimum, which is never longer than the octile
-// optimum (a run of octile moves inside a free quad is no shorter than the straight segment
-// between its ends), so neither is the returned path.
+// Search: without wall costs, Lazy Theta* (Nash, Koenig & Tovey, "Lazy Theta*: Any-Angle Path
+// Planning and Path Length Analysis in 3D", AAAI 2010) over that graph: a node takes its
+// predecessor's parent as its own, and the line of sight is checked (segmentFree) when it is
+// expanded; if blocked, its best expanded neighbour becomes the parent and the node is queued again
+// with that g instead of being expanded. So a node is expanded only with the length of a real free
+// path, and since a shortcut is never longer than the two edges it replaces, that length is never
+// above the node's distance in the graph (the A* argument with a consistent heuristic). With wall
+// costs, plain A*: a shortcut would skip the costs of the nodes it passes.
+// Smoothing (PathSmoothing.h): string pulling and bends moved onto obstacle corners, each step
+// only shortening the path. The graph's optimum is never longer than the octile optimum (a run of
+// octile moves inside a free quad is no shorter than the straight segment between its ends), so
+// neither is the returned path.
 // Differs from the thesis: start and goal are joined to their quad's whole frame instead of being
-// moved to cell centres afterwards, and the bends snap to obstacle corners.
+// moved to cell centres afterwards; the search is any-angle; the bends snap to obstacle corners.
 #pragma once
 
 #include <cstddef>
