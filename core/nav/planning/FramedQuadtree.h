@@ -45,6 +45,26 @@ class FramedQuadtree {
   std::int32_t nodeQuad(std::int32_t node) const { return nodeQuads_[static_cast<std::size_t>(node)]; }
   std::size_t freeCellCount() const { return freeCells_; }
 
+  // Calls visit(n) for every graph neighbour n of `node`: the rest of its quad's frame (a straight
+  // segment inside a free square) and its 8 neighbouring cells in other quads, a diagonal one only
+  // where the step does not squeeze between two blocked cells (segmentFree's rule at a grid
+  // vertex). `grid` is the grid the tree was built from.
+  template <class Visit>
+  void forEachNeighbour(std::int32_t node, const OccupancyGrid& grid, Visit&& visit) const {
+    const std::int32_t quad = nodeQuad(node);
+    const Quad& q = quads_[static_cast<std::size_t>(quad)];
+    for (std::int32_t n = q.firstNode; n < q.firstNode + q.nodeCount; ++n)
+      if (n != node) visit(n);
+    const CellIndex c = nodeCell(node);
+    for (int dy = -1; dy <= 1; ++dy)
+      for (int dx = -1; dx <= 1; ++dx) {
+        const std::int32_t n = nodeOf({c.col + dx, c.row + dy});
+        if (n == kNone || nodeQuad(n) == quad) continue;
+        if (dx != 0 && dy != 0 && grid.blocked({c.col + dx, c.row}) && grid.blocked({c.col, c.row + dy})) continue;
+        visit(n);
+      }
+  }
+
  private:
   bool contains(CellIndex c) const { return c.col >= 0 && c.row >= 0 && c.col < width_ && c.row < height_; }
   std::size_t index(CellIndex c) const {

@@ -10,7 +10,6 @@
 
 #include "core/nav/grid/PlanningErrors.h"
 #include "core/nav/planning/PathSmoothing.h"
-#include "core/nav/planning/SegmentVisibility.h"
 #include "core/raster/DistanceField.h"
 
 namespace rgnav {
@@ -51,7 +50,7 @@ void validate(const FramedQuadtreePlannerConfig& config) {
 }
 
 FramedQuadtreePlanner::FramedQuadtreePlanner(const OccupancyGrid& grid, FramedQuadtreePlannerConfig config)
-    : grid_(grid), config_((validate(config), config)), tree_(grid) {
+    : grid_(grid), config_((validate(config), config)), tree_(grid), lineOfSight_(grid), landmarks_(tree_, grid, lineOfSight_) {
   nodeCentres_.reserve(tree_.nodeCount());
   for (std::size_t n = 0; n < tree_.nodeCount(); ++n) {
     const CellIndex c = tree_.nodeCell(static_cast<std::int32_t>(n));
@@ -108,30 +107,40 @@ CellUnitPath FramedQuadtreePlanner::plan(const Eigen::Vector2d& start, const Eig
     const double length = (position(b) - position(a)).norm();
     return costs ? length * (1.0 + 0.5 * (costOf(a) + costOf(b))) : length;
   };
+  // The landmark distances of start and goal, through the frame of their quad.
+  const auto landmarkDistances = [&](std::int32_t quad, const Eigen::Vector2d& p) {
+    FramedQuadtreeLandmarks::Distances d;
+    d.fill(FramedQuadtreeLandmarks::kUnreachable);
+    const FramedQuadtree::Quad& q = tree_.quads()[static_cast<std::size_t>(quad)];
+    for (std::int32_t n = q.firstNode; n < q.firstNode + q.nodeCount; ++n) {
+      const double step = (nodeCentres_[static_cast<std::size_t>(n)] - p).norm();
+      for (std::size_t l = 0; l < d.size(); ++l) d[l] = std::min(d[l], landmarks_.of(n)[l] + step);
+    }
+    return d;
+  };
+  const FramedQuadtreeLandmarks::Distances startLandmarks = landmarkDistances(startQuad, start);
+  const FramedQuadtreeLandmarks::Distances goalLandmarks = landmarkDistances(goalQuad, goal);
+  const auto heuristic = [&](std::int32_t id) {
+    if (id == goalId) return 0.0;
+    const double* d = id == startId ? startLandmarks.data() : landmarks_.of(id);
+    return std::max((goal - position(id)).norm(), FramedQuadtreeLandmarks::lowerBound(d, goalLandmarks.data()));
+  };
   const auto push = [&](std::int32_t id, double g) {
-    heap_.push_back({g + (goal - position(id)).norm(), g, id});
+    heap_.push_back({g + heuristic(id), g, id});
     std::push_heap(heap_.begin(), heap_.end(), later);
   };
-  // Calls visit(n) for every graph neighbour n of node `id`: the rest of its quad's frame (with
-  // start and goal when they lie in that quad) and its 8 neighbouring cells in other quads.
+  // Calls visit(n) for every graph neighbour n of node `id`, start and goal joined to the frame of
+  // their quad (and to each other when they share it).
   const auto forEachNeighbour = [&](std::int32_t id, auto&& visit) {
     const std::int32_t quad = id == startId ? startQuad : id == goalId ? goalQuad : tree_.nodeQuad(id);
-    const FramedQuadtree::Quad& q = tree_.quads()[static_cast<std::size_t>(quad)];
-    for (std::int32_t n = q.firstNode; n < q.firstNode + q.nodeCount; ++n)
-      if (n != id) visit(n);
+    if (id < nodes) {
+      tree_.forEachNeighbour(id, grid_, visit);
+    } else {
+      const FramedQuadtree::Quad& q = tree_.quads()[static_cast<std::size_t>(quad)];
+      for (std::int32_t n = q.firstNode; n < q.firstNode + q.nodeCount; ++n) visit(n);
+    }
     if (quad == goalQuad && id != goalId) visit(goalId);
     if (quad == startQuad && id != startId) visit(startId);
-    if (id >= nodes) return;
-    const CellIndex c = tree_.nodeCell(id);
-    for (int dy = -1; dy <= 1; ++dy)
-      for (int dx = -1; dx <= 1; ++dx) {
-        const std::int32_t n = tree_.nodeOf({c.col + dx, c.row + dy});
-        if (n == FramedQuadtree::kNone || tree_.nodeQuad(n) == quad) continue;
-        // A diagonal step between cell centres is free unless it squeezes between two blocked
-        // cells (segmentFree's rule at a grid vertex).
-        if (dx != 0 && dy != 0 && grid_.blocked({c.col + dx, c.row}) && grid_.blocked({c.col, c.row + dy})) continue;
-        visit(n);
-      }
   };
 
   const bool anyAngle = !costs;  // Lazy Theta*; with wall costs plain A*, whose edges carry the costs
@@ -145,7 +154,7 @@ CellUnitPath FramedQuadtreePlanner::plan(const Eigen::Vector2d& start, const Eig
     heap_.pop_back();
     NodeState& s = stateOf(top.node);
     if (s.closed == search_ || top.g != s.g) continue;
-    if (anyAngle && s.parent >= 0 && !segmentFree(grid_, position(s.parent), position(top.node))) {
+    if (anyAngle && s.parent >= 0 && !lineOfSight_.free(position(s.parent), position(top.node))) {
       // Lazy Theta*: the assumed line of sight from the parent's parent is blocked; the best
       // expanded neighbour becomes the parent and the node waits its turn again with that g.
       s.g = std::numeric_limits<double>::infinity();

@@ -12,13 +12,17 @@
 // with that g instead of being expanded. So a node is expanded only with the length of a real free
 // path, and since a shortcut is never longer than the two edges it replaces, that length is never
 // above the node's distance in the graph (the A* argument with a consistent heuristic). With wall
-// costs, plain A*: a shortcut would skip the costs of the nodes it passes.
+// costs, plain A*: a shortcut would skip the costs of the nodes it passes. The heuristic is the
+// larger of the straight-line distance and the landmark bound (FramedQuadtreeLandmarks.h), both
+// consistent along the graph's edges. Segments are checked with LineOfSight (segmentFree with a
+// fast path through open space).
 // Smoothing (PathSmoothing.h): string pulling and bends moved onto obstacle corners, each step
 // only shortening the path. The graph's optimum is never longer than the octile optimum (a run of
 // octile moves inside a free quad is no shorter than the straight segment between its ends), so
 // neither is the returned path.
 // Differs from the thesis: start and goal are joined to their quad's whole frame instead of being
-// moved to cell centres afterwards; the search is any-angle; the bends snap to obstacle corners.
+// moved to cell centres afterwards; the search is any-angle with a landmark heuristic; the bends
+// snap to obstacle corners.
 #pragma once
 
 #include <cstddef>
@@ -29,6 +33,8 @@
 #include <Eigen/Core>
 
 #include "core/nav/planning/FramedQuadtree.h"
+#include "core/nav/planning/FramedQuadtreeLandmarks.h"
+#include "core/nav/planning/LineOfSight.h"
 #include "core/raster/OccupancyGrid.h"
 
 namespace rgnav {
@@ -48,8 +54,8 @@ struct CellUnitPath {                   // points in cell units (SegmentVisibili
 
 class FramedQuadtreePlanner {
  public:
-  // Builds the framed quadtree of `grid` (which must outlive the planner) and, with wall costs on,
-  // its distance field. Throws ConfigError for an invalid config.
+  // Builds the framed quadtree of `grid` (which must outlive the planner), its landmark distances
+  // and distance field. Throws ConfigError for an invalid config.
   FramedQuadtreePlanner(const OccupancyGrid& grid, FramedQuadtreePlannerConfig config = {});
   // Any start/goal point inside (or on the border of) a free cell, cell units. Throws
   // StartBlockedError / GoalBlockedError (point not in a free cell) and NoPathError (not
@@ -73,6 +79,8 @@ class FramedQuadtreePlanner {
   const OccupancyGrid& grid_;
   FramedQuadtreePlannerConfig config_;
   FramedQuadtree tree_;
+  LineOfSight lineOfSight_;
+  FramedQuadtreeLandmarks landmarks_;
   std::vector<Eigen::Vector2d> nodeCentres_;  // per graph node
   std::vector<float> nodeCost_;               // per graph node, extra cost per cell of path (empty: off)
   std::vector<float> cellCost_;               // per cell, the same field for smoothing (empty: off)
