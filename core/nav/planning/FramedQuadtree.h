@@ -45,16 +45,26 @@ class FramedQuadtree {
   std::int32_t nodeQuad(std::int32_t node) const { return nodeQuads_[static_cast<std::size_t>(node)]; }
   std::size_t freeCellCount() const { return freeCells_; }
 
-  // Calls visit(n) for every graph neighbour n of `node`: the rest of its quad's frame (a straight
-  // segment inside a free square) and its 8 neighbouring cells in other quads, a diagonal one only
-  // where the step does not squeeze between two blocked cells (segmentFree's rule at a grid
-  // vertex). `grid` is the grid the tree was built from.
+  // Calls visit(n) for every graph neighbour n of `node`: the rest of its quad's frame
+  // (forEachFrameNeighbour) and its neighbouring cells in other quads (forEachCellNeighbour).
+  // `grid` is the grid the tree was built from.
   template <class Visit>
   void forEachNeighbour(std::int32_t node, const OccupancyGrid& grid, Visit&& visit) const {
-    const std::int32_t quad = nodeQuad(node);
-    const Quad& q = quads_[static_cast<std::size_t>(quad)];
+    forEachFrameNeighbour(node, visit);
+    forEachCellNeighbour(node, grid, visit);
+  }
+  // The other frame nodes of the node's quad: a straight segment inside a free square.
+  template <class Visit>
+  void forEachFrameNeighbour(std::int32_t node, Visit&& visit) const {
+    const Quad& q = quads_[static_cast<std::size_t>(nodeQuad(node))];
     for (std::int32_t n = q.firstNode; n < q.firstNode + q.nodeCount; ++n)
       if (n != node) visit(n);
+  }
+  // The 8 neighbouring cells in other quads, a diagonal one only where the step does not squeeze
+  // between two blocked cells (segmentFree's rule at a grid vertex).
+  template <class Visit>
+  void forEachCellNeighbour(std::int32_t node, const OccupancyGrid& grid, Visit&& visit) const {
+    const std::int32_t quad = nodeQuad(node);
     const CellIndex c = nodeCell(node);
     for (int dy = -1; dy <= 1; ++dy)
       for (int dx = -1; dx <= 1; ++dx) {

@@ -86,8 +86,10 @@ CellUnitPath FramedQuadtreePlanner::plan(const Eigen::Vector2d& start, const Eig
     state_.assign(static_cast<std::size_t>(nodes) + 2, NodeState{});
     search_ = 0;
   }
+  if (frameRelaxed_.size() != tree_.quads().size()) frameRelaxed_.assign(tree_.quads().size(), FrameRelaxation{});
   if (++search_ == 0) {  // the stamp wrapped: forget every old search
     std::fill(state_.begin(), state_.end(), NodeState{});
+    std::fill(frameRelaxed_.begin(), frameRelaxed_.end(), FrameRelaxation{});
     search_ = 1;
   }
   const std::int32_t startQuad = tree_.quadOf(*startCell), goalQuad = tree_.quadOf(*goalCell);
@@ -129,12 +131,17 @@ CellUnitPath FramedQuadtreePlanner::plan(const Eigen::Vector2d& start, const Eig
     heap_.push_back({g + heuristic(id), g, id});
     std::push_heap(heap_.begin(), heap_.end(), later);
   };
+  const auto quadOf = [&](std::int32_t id) {
+    return id == startId ? startQuad : id == goalId ? goalQuad : tree_.nodeQuad(id);
+  };
   // Calls visit(n) for every graph neighbour n of node `id`, start and goal joined to the frame of
-  // their quad (and to each other when they share it).
-  const auto forEachNeighbour = [&](std::int32_t id, auto&& visit) {
-    const std::int32_t quad = id == startId ? startQuad : id == goalId ? goalQuad : tree_.nodeQuad(id);
+  // their quad (and to each other when they share it); the frame part only if `frame`.
+  const auto forEachNeighbour = [&](std::int32_t id, bool frame, auto&& visit) {
+    const std::int32_t quad = quadOf(id);
+    if (id < nodes) tree_.forEachCellNeighbour(id, grid_, visit);
+    if (!frame) return;
     if (id < nodes) {
-      tree_.forEachNeighbour(id, grid_, visit);
+      tree_.forEachFrameNeighbour(id, visit);
     } else {
       const FramedQuadtree::Quad& q = tree_.quads()[static_cast<std::size_t>(quad)];
       for (std::int32_t n = q.firstNode; n < q.firstNode + q.nodeCount; ++n) visit(n);
@@ -156,9 +163,11 @@ CellUnitPath FramedQuadtreePlanner::plan(const Eigen::Vector2d& start, const Eig
     if (s.closed == search_ || top.g != s.g) continue;
     if (anyAngle && s.parent >= 0 && !lineOfSight_.free(position(s.parent), position(top.node))) {
       // Lazy Theta*: the assumed line of sight from the parent's parent is blocked; the best
-      // expanded neighbour becomes the parent and the node waits its turn again with that g.
+      // expanded neighbour becomes the parent and the node waits its turn again with that g. Its
+      // quad's frame is relaxed afresh at the next expansion there, which may offer less again.
+      frameRelaxed_[static_cast<std::size_t>(quadOf(top.node))].search = 0;
       s.g = std::numeric_limits<double>::infinity();
-      forEachNeighbour(top.node, [&](std::int32_t n) {
+      forEachNeighbour(top.node, true, [&](std::int32_t n) {
         if (!closed(n)) return;
         const double g = stateOf(n).g + edgeCost(n, top.node);
         if (g < s.g) {
@@ -172,11 +181,15 @@ CellUnitPath FramedQuadtreePlanner::plan(const Eigen::Vector2d& start, const Eig
     s.closed = search_;
     ++path.expansions;
     if (top.node == goalId) break;
-    forEachNeighbour(top.node, [&](std::int32_t to) {
+    // Lazy Theta*: assume a line of sight from this node's parent; checked when `to` is expanded.
+    const std::int32_t parent = anyAngle && s.parent >= 0 ? s.parent : top.node;
+    // A quad's frame relaxed from the same parent before gets nothing new: the parent's g is final.
+    FrameRelaxation& last = frameRelaxed_[static_cast<std::size_t>(quadOf(top.node))];
+    const bool frame = last.search != search_ || last.parent != parent;
+    last = {search_, parent};
+    forEachNeighbour(top.node, frame, [&](std::int32_t to) {
       NodeState& t = stateOf(to);
       if (t.seen == search_ && t.closed == search_) return;
-      // Lazy Theta*: assume a line of sight from this node's parent; checked when `to` is expanded.
-      const std::int32_t parent = anyAngle && s.parent >= 0 ? s.parent : top.node;
       const double g = stateOf(parent).g + edgeCost(parent, to);
       if (t.seen == search_ && t.g <= g) return;
       t = {g, parent, search_, 0};

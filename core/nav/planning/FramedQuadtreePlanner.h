@@ -76,6 +76,11 @@ class FramedQuadtreePlanner {
     std::int32_t node;
   };
 
+  struct FrameRelaxation {  // a quad's frame last relaxed in search `search` from `parent`
+    std::uint32_t search = 0;
+    std::int32_t parent = -1;
+  };
+
   const OccupancyGrid& grid_;
   FramedQuadtreePlannerConfig config_;
   FramedQuadtree tree_;
@@ -87,6 +92,7 @@ class FramedQuadtreePlanner {
   mutable std::mutex mutex_;
   mutable std::vector<NodeState> state_;  // graph nodes, then start and goal
   mutable std::vector<Open> heap_;
+  mutable std::vector<FrameRelaxation> frameRelaxed_;  // per quad
   mutable std::uint32_t search_ = 0;
 };
 
