@@ -127,8 +127,9 @@ CellUnitPath FramedQuadtreePlanner::plan(const Eigen::Vector2d& start, const Eig
     const double* d = id == startId ? startLandmarks.data() : landmarks_.of(id);
     return std::max((goal - position(id)).norm(), FramedQuadtreeLandmarks::lowerBound(d, goalLandmarks.data()));
   };
+  // Queues a node with its g (its heuristic is computed once per search).
   const auto push = [&](std::int32_t id, double g) {
-    heap_.push_back({g + heuristic(id), g, id});
+    heap_.push_back({g + stateOf(id).h, g, id});
     std::push_heap(heap_.begin(), heap_.end(), later);
   };
   const auto quadOf = [&](std::int32_t id) {
@@ -153,7 +154,7 @@ CellUnitPath FramedQuadtreePlanner::plan(const Eigen::Vector2d& start, const Eig
   const bool anyAngle = !costs;  // Lazy Theta*; with wall costs plain A*, whose edges carry the costs
   heap_.clear();
   CellUnitPath path;
-  stateOf(startId) = {0.0, -1, search_, 0};
+  stateOf(startId) = {0.0, heuristic(startId), -1, search_, 0};
   push(startId, 0.0);
   while (!heap_.empty()) {
     std::pop_heap(heap_.begin(), heap_.end(), later);
@@ -175,8 +176,11 @@ CellUnitPath FramedQuadtreePlanner::plan(const Eigen::Vector2d& start, const Eig
           s.parent = n;
         }
       });
-      push(top.node, s.g);
-      continue;
+      // Still no worse than every queued node: expanded now, as queueing it would.
+      if (!heap_.empty() && s.g + s.h > heap_.front().f) {
+        push(top.node, s.g);
+        continue;
+      }
     }
     s.closed = search_;
     ++path.expansions;
@@ -192,7 +196,9 @@ CellUnitPath FramedQuadtreePlanner::plan(const Eigen::Vector2d& start, const Eig
       if (t.seen == search_ && t.closed == search_) return;
       const double g = stateOf(parent).g + edgeCost(parent, to);
       if (t.seen == search_ && t.g <= g) return;
-      t = {g, parent, search_, 0};
+      if (t.seen != search_) t = {0.0, heuristic(to), -1, search_, 0};
+      t.g = g;
+      t.parent = parent;
       push(to, g);
     });
   }

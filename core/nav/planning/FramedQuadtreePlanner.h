@@ -66,6 +66,7 @@ class FramedQuadtreePlanner {
  private:
   struct NodeState {
     double g = 0.0;
+    double h = 0.0;  // the heuristic to the goal
     std::int32_t parent = -1;
     std::uint32_t seen = 0;    // search stamp: g and parent are valid
     std::uint32_t closed = 0;  // search stamp: expanded
