@@ -8,10 +8,11 @@
 // Search: without wall costs, Lazy Theta* (Nash, Koenig & Tovey, "Lazy Theta*: Any-Angle Path
 // Planning and Path Length Analysis in 3D", AAAI 2010) over that graph: a node takes its
 // predecessor's parent as its own, and the line of sight is checked (segmentFree) when it is
-// expanded; if blocked, its best expanded neighbour becomes the parent and the node is queued again
-// with that g instead of being expanded. So a node is expanded only with the length of a real free
-// path, and since a shortcut is never longer than the two edges it replaces, that length is never
-// above the node's distance in the graph (the A* argument with a consistent heuristic). With wall
+// expanded; if blocked, its best expanded neighbour becomes the parent and the node is queued
+// again with that g unless it still leads the queue. So a node is expanded only with the length of
+// a real free path, and since a shortcut is never longer than the two edges it replaces, that
+// length is never above the node's distance in the graph (the A* argument with a consistent
+// heuristic). With wall
 // costs, plain A*: a shortcut would skip the costs of the nodes it passes. The heuristic is the
 // larger of the straight-line distance and the landmark bound (FramedQuadtreeLandmarks.h), both
 // consistent along the graph's edges. Segments are checked with LineOfSight (segmentFree with a
