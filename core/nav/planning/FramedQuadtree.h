@@ -47,11 +47,10 @@ class FramedQuadtree {
 
   // Calls visit(n) for every graph neighbour n of `node`: the rest of its quad's frame
   // (forEachFrameNeighbour) and its neighbouring cells in other quads (forEachCellNeighbour).
-  // `grid` is the grid the tree was built from.
   template <class Visit>
-  void forEachNeighbour(std::int32_t node, const OccupancyGrid& grid, Visit&& visit) const {
+  void forEachNeighbour(std::int32_t node, Visit&& visit) const {
     forEachFrameNeighbour(node, visit);
-    forEachCellNeighbour(node, grid, visit);
+    forEachCellNeighbour(node, visit);
   }
   // The other frame nodes of the node's quad: a straight segment inside a free square.
   template <class Visit>
@@ -60,19 +59,12 @@ class FramedQuadtree {
     for (std::int32_t n = q.firstNode; n < q.firstNode + q.nodeCount; ++n)
       if (n != node) visit(n);
   }
-  // The 8 neighbouring cells in other quads, a diagonal one only where the step does not squeeze
-  // between two blocked cells (segmentFree's rule at a grid vertex).
+  // The (up to 8) neighbouring cells in other quads, a diagonal one only where the step does not
+  // squeeze between two blocked cells (segmentFree's rule at a grid vertex).
   template <class Visit>
-  void forEachCellNeighbour(std::int32_t node, const OccupancyGrid& grid, Visit&& visit) const {
-    const std::int32_t quad = nodeQuad(node);
-    const CellIndex c = nodeCell(node);
-    for (int dy = -1; dy <= 1; ++dy)
-      for (int dx = -1; dx <= 1; ++dx) {
-        const std::int32_t n = nodeOf({c.col + dx, c.row + dy});
-        if (n == kNone || nodeQuad(n) == quad) continue;
-        if (dx != 0 && dy != 0 && grid.blocked({c.col + dx, c.row}) && grid.blocked({c.col, c.row + dy})) continue;
-        visit(n);
-      }
+  void forEachCellNeighbour(std::int32_t node, Visit&& visit) const {
+    const auto i = static_cast<std::size_t>(node);
+    for (std::uint32_t k = cellNeighbourStart_[i]; k < cellNeighbourStart_[i + 1]; ++k) visit(cellNeighbours_[k]);
   }
 
  private:
@@ -81,6 +73,7 @@ class FramedQuadtree {
     return static_cast<std::size_t>(c.row) * static_cast<std::size_t>(width_) + static_cast<std::size_t>(c.col);
   }
   void addQuad(int col, int row, int size);
+  void linkCellNeighbours(const OccupancyGrid& grid);
 
   int width_ = 0;
   int height_ = 0;
@@ -90,6 +83,8 @@ class FramedQuadtree {
   std::vector<std::int32_t> nodeOfCell_;  // row-major
   std::vector<CellIndex> nodeCells_;
   std::vector<std::int32_t> nodeQuads_;
+  std::vector<std::uint32_t> cellNeighbourStart_;  // per node and one more: its range in cellNeighbours_
+  std::vector<std::int32_t> cellNeighbours_;
 };
 
 }  // namespace rgnav

@@ -12,8 +12,7 @@ namespace rgnav {
 namespace {
 
 // Any-angle distances from `source` to every node (kUnreachable where none).
-std::vector<double> distancesFrom(const FramedQuadtree& tree, const OccupancyGrid& grid, const LineOfSight& lineOfSight,
-                                  std::int32_t source) {
+std::vector<double> distancesFrom(const FramedQuadtree& tree, const LineOfSight& lineOfSight, std::int32_t source) {
   std::vector<double> distance(tree.nodeCount(), FramedQuadtreeLandmarks::kUnreachable);
   std::vector<std::int32_t> parent(tree.nodeCount(), -1);
   std::vector<char> closed(tree.nodeCount(), 0);
@@ -33,7 +32,7 @@ std::vector<double> distancesFrom(const FramedQuadtree& tree, const OccupancyGri
     const Eigen::Vector2d x = centre(node);
     if (parent[i] >= 0 && !lineOfSight.free(centre(parent[i]), x)) {
       distance[i] = FramedQuadtreeLandmarks::kUnreachable;
-      tree.forEachNeighbour(node, grid, [&](std::int32_t n) {
+      tree.forEachNeighbour(node, [&](std::int32_t n) {
         if (!closed[static_cast<std::size_t>(n)]) return;
         const double through = distance[static_cast<std::size_t>(n)] + (centre(n) - x).norm();
         if (through < distance[i]) {
@@ -48,7 +47,7 @@ std::vector<double> distancesFrom(const FramedQuadtree& tree, const OccupancyGri
     closed[i] = 1;
     const std::int32_t from = parent[i] >= 0 ? parent[i] : node;
     const Eigen::Vector2d f = centre(from);
-    tree.forEachNeighbour(node, grid, [&](std::int32_t n) {
+    tree.forEachNeighbour(node, [&](std::int32_t n) {
       const auto k = static_cast<std::size_t>(n);
       if (closed[k]) return;
       const double through = distance[static_cast<std::size_t>(from)] + (centre(n) - f).norm();
@@ -72,7 +71,7 @@ std::vector<double> distancesFrom(const FramedQuadtree& tree, const OccupancyGri
     heap.pop_back();
     if (d != distance[static_cast<std::size_t>(node)]) continue;
     const Eigen::Vector2d x = centre(node);
-    tree.forEachNeighbour(node, grid, [&](std::int32_t n) {
+    tree.forEachNeighbour(node, [&](std::int32_t n) {
       const double through = d + (centre(n) - x).norm();
       if (through < distance[static_cast<std::size_t>(n)]) {
         distance[static_cast<std::size_t>(n)] = through;
@@ -85,7 +84,7 @@ std::vector<double> distancesFrom(const FramedQuadtree& tree, const OccupancyGri
 }
 
 // A node of the largest connected component of the graph.
-std::int32_t largestComponentNode(const FramedQuadtree& tree, const OccupancyGrid& grid) {
+std::int32_t largestComponentNode(const FramedQuadtree& tree) {
   std::vector<char> seen(tree.nodeCount(), 0);
   std::vector<std::int32_t> pending;
   std::int32_t best = 0;
@@ -99,7 +98,7 @@ std::int32_t largestComponentNode(const FramedQuadtree& tree, const OccupancyGri
       const std::int32_t node = pending.back();
       pending.pop_back();
       ++size;
-      tree.forEachNeighbour(node, grid, [&](std::int32_t n) {
+      tree.forEachNeighbour(node, [&](std::int32_t n) {
         if (!seen[static_cast<std::size_t>(n)]) {
           seen[static_cast<std::size_t>(n)] = 1;
           pending.push_back(n);
@@ -125,14 +124,13 @@ std::int32_t farthest(const std::vector<double>& values) {
 
 }  // namespace
 
-FramedQuadtreeLandmarks::FramedQuadtreeLandmarks(const FramedQuadtree& tree, const OccupancyGrid& grid,
-                                                 const LineOfSight& lineOfSight) {
+FramedQuadtreeLandmarks::FramedQuadtreeLandmarks(const FramedQuadtree& tree, const LineOfSight& lineOfSight) {
   const std::size_t nodes = tree.nodeCount();
   distances_.assign(nodes * kCount, kUnreachable);
   if (nodes == 0) return;
-  std::vector<double> nearest = distancesFrom(tree, grid, lineOfSight, largestComponentNode(tree, grid));  // to the landmarks so far
+  std::vector<double> nearest = distancesFrom(tree, lineOfSight, largestComponentNode(tree));  // to the landmarks so far
   for (std::size_t l = 0; l < kCount; ++l) {
-    const std::vector<double> d = distancesFrom(tree, grid, lineOfSight, farthest(nearest));
+    const std::vector<double> d = distancesFrom(tree, lineOfSight, farthest(nearest));
     for (std::size_t n = 0; n < nodes; ++n) {
       distances_[n * kCount + l] = d[n];
       nearest[n] = l == 0 ? d[n] : std::min(nearest[n], d[n]);

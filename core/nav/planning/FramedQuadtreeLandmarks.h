@@ -24,7 +24,6 @@
 
 #include "core/nav/planning/FramedQuadtree.h"
 #include "core/nav/planning/LineOfSight.h"
-#include "core/raster/OccupancyGrid.h"
 
 namespace rgnav {
 
@@ -34,7 +33,8 @@ class FramedQuadtreeLandmarks {
   using Distances = std::array<double, kCount>;  // to each landmark; infinity where unreachable
   static constexpr double kUnreachable = std::numeric_limits<double>::infinity();
 
-  FramedQuadtreeLandmarks(const FramedQuadtree& tree, const OccupancyGrid& grid, const LineOfSight& lineOfSight);
+  // `lineOfSight` is over the grid `tree` was built from.
+  FramedQuadtreeLandmarks(const FramedQuadtree& tree, const LineOfSight& lineOfSight);
 
   const double* of(std::int32_t node) const { return &distances_[static_cast<std::size_t>(node) * kCount]; }
   // The largest |d(L, a) - d(L, b)| over the landmarks that reach both; 0 if none does.

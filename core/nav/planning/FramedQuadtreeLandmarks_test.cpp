@@ -29,12 +29,12 @@ class FramedQuadtreeLandmarksTest : public CppUnit::TestFixture {
           if (blocked(rng)) grid.set({c, r}, Cell::Occupied);
       const FramedQuadtree tree(grid);
       const rgnav::LineOfSight lineOfSight(grid);
-      const FramedQuadtreeLandmarks landmarks(tree, grid, lineOfSight);
+      const FramedQuadtreeLandmarks landmarks(tree, lineOfSight);
       std::size_t zeros = 0;
       for (std::int32_t u = 0; u < static_cast<std::int32_t>(tree.nodeCount()); ++u) {
         const rgnav::CellIndex cu = tree.nodeCell(u);
         for (std::size_t l = 0; l < FramedQuadtreeLandmarks::kCount; ++l) zeros += landmarks.of(u)[l] == 0.0 ? 1 : 0;
-        tree.forEachNeighbour(u, grid, [&](std::int32_t n) {
+        tree.forEachNeighbour(u, [&](std::int32_t n) {
           const rgnav::CellIndex cn = tree.nodeCell(n);
           const double edge = std::hypot(cu.col - cn.col, cu.row - cn.row);
           CPPUNIT_ASSERT(FramedQuadtreeLandmarks::lowerBound(landmarks.of(u), landmarks.of(n)) <= edge * (1 + 1e-12));
@@ -49,7 +49,7 @@ class FramedQuadtreeLandmarksTest : public CppUnit::TestFixture {
     for (int r = 0; r < 20; ++r) grid.set({30, r}, Cell::Occupied);
     const FramedQuadtree tree(grid);
     const rgnav::LineOfSight lineOfSight(grid);
-    const FramedQuadtreeLandmarks landmarks(tree, grid, lineOfSight);
+    const FramedQuadtreeLandmarks landmarks(tree, lineOfSight);
     for (std::int32_t u = 0; u < static_cast<std::int32_t>(tree.nodeCount()); ++u) {
       const bool beyond = tree.nodeCell(u).col > 30;
       for (std::size_t l = 0; l < FramedQuadtreeLandmarks::kCount; ++l)

@@ -50,7 +50,7 @@ void validate(const FramedQuadtreePlannerConfig& config) {
 }
 
 FramedQuadtreePlanner::FramedQuadtreePlanner(const OccupancyGrid& grid, FramedQuadtreePlannerConfig config)
-    : grid_(grid), config_((validate(config), config)), tree_(grid), lineOfSight_(grid), landmarks_(tree_, grid, lineOfSight_) {
+    : grid_(grid), config_((validate(config), config)), tree_(grid), lineOfSight_(grid), landmarks_(tree_, lineOfSight_) {
   nodeCentres_.reserve(tree_.nodeCount());
   for (std::size_t n = 0; n < tree_.nodeCount(); ++n) {
     const CellIndex c = tree_.nodeCell(static_cast<std::int32_t>(n));
@@ -139,7 +139,7 @@ CellUnitPath FramedQuadtreePlanner::plan(const Eigen::Vector2d& start, const Eig
   // their quad (and to each other when they share it); the frame part only if `frame`.
   const auto forEachNeighbour = [&](std::int32_t id, bool frame, auto&& visit) {
     const std::int32_t quad = quadOf(id);
-    if (id < nodes) tree_.forEachCellNeighbour(id, grid_, visit);
+    if (id < nodes) tree_.forEachCellNeighbour(id, visit);
     if (!frame) return;
     if (id < nodes) {
       tree_.forEachFrameNeighbour(id, visit);
