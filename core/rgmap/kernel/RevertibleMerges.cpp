@@ -41,7 +41,8 @@ std::optional<std::string> changedSides(const RgMapState& s, const RevertibleMer
 }  // namespace
 
 RevertibleMerge revertibleMerge(const RgMapState& s, RegionId a, RegionId b) {
-  RevertibleMerge m{s.regions.at(std::min(a, b)), s.regions.at(std::max(a, b)), {}, s.current, s.visitStart, s.lastScanId};
+  RevertibleMerge m{s.regions.at(std::min(a, b)), s.regions.at(std::max(a, b)), {},
+                    s.current, s.visitStart, s.lastScanId};
   for (const Region* r : {&m.kept, &m.absorbed})
     for (GatewayId g : r->gateways) {
       const Gateway& gateway = s.gateways.at(g);
@@ -68,9 +69,11 @@ std::optional<std::string> whyNotRevertible(const RgMapState& s, const Revertibl
     return "the robot left " + regionText(id) + " for the first time since";
   const bool robotIn = s.current == id;
   if (robotIn && !(eitherRegion(m, m.current) && s.visitStart == m.visitStart))
-    return "the robot entered " + regionText(id) + " again since: its scans since cannot be divided between the two regions";
+    return "the robot entered " + regionText(id) +
+           " again since: its scans since cannot be divided between the two regions";
   if (!robotIn && later != now.scans.end())
-    return "the robot took scans in " + regionText(id) + " and left it since: they cannot be divided between the two regions";
+    return "the robot took scans in " + regionText(id) +
+           " and left it since: they cannot be divided between the two regions";
   if (!m.absorbed.name.empty())
     for (const auto& [other, r] : s.regions)
       if (other != id && r.name == m.absorbed.name)

@@ -101,8 +101,12 @@ json revertibleMerge(const RevertibleMerge& m) {
           {"visitStart", m.visitStart},   {"lastScan", m.lastScan}};
 }
 RevertibleMerge revertibleMerge(const json& j) {
-  RevertibleMerge m{region(j.at("kept")), region(j.at("absorbed")), {}, static_cast<RegionId>(integerFrom(j.at("current"))),
-                    static_cast<DataId>(integerFrom(j.at("visitStart"))), static_cast<DataId>(integerFrom(j.at("lastScan")))};
+  RevertibleMerge m{region(j.at("kept")),
+                    region(j.at("absorbed")),
+                    {},
+                    static_cast<RegionId>(integerFrom(j.at("current"))),
+                    static_cast<DataId>(integerFrom(j.at("visitStart"))),
+                    static_cast<DataId>(integerFrom(j.at("lastScan")))};
   for (const json& g : j.at("sides"))
     m.sides[static_cast<GatewayId>(integerFrom(g.at(0)))] = {static_cast<RegionId>(integerFrom(g.at(1))),
                                                              static_cast<RegionId>(integerFrom(g.at(2)))};

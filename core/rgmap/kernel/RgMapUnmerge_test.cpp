@@ -169,6 +169,9 @@ class RgMapUnmergeTest : public CppUnit::TestFixture {
     RgMappingKernel k = rgnav::testing::mapped(inputs, inputs.size());
     assertRefused(k, kRoom1, "no merge into region 2 can be undone");
     assertRefused(k, RegionId{99}, "no merge into region 99 can be undone");
+    k.mergeRegions(kRoom1, kRoom2, true);
+    assertRefused(k, kRoom2, "region 3 was merged into region 2: undo that merge");
+    k.unmergeRegions(kRoom1);
 
     // Renamed since; named back, the undo is safe again.
     k.mergeRegions(kRoom1, kRoom2, true);

@@ -370,11 +370,19 @@ RegionId RgMappingKernel::mergeRegions(RegionId a, RegionId b, bool force) {
 
 RegionId RgMappingKernel::unmergeRegions(RegionId merged) {
   std::vector<RevertibleMerge>& merges = state_.revertibleMerges;
-  const auto latest = std::find_if(merges.rbegin(), merges.rend(), [&](const RevertibleMerge& m) { return m.kept.id == merged; });
+  const auto latestWith = [&](auto&& which) {
+    return std::find_if(merges.rbegin(), merges.rend(), [&](const RevertibleMerge& m) { return which(m) == merged; });
+  };
+  const auto latest = latestWith([](const RevertibleMerge& m) { return m.kept.id; });
   const std::string region = "region " + std::to_string(merged.value());
-  if (latest == merges.rend())
+  if (latest == merges.rend()) {
+    const auto into = latestWith([](const RevertibleMerge& m) { return m.absorbed.id; });
+    const std::string hint = into == merges.rend() ? ""
+                                                   : " (" + region + " was merged into region " +
+                                                         std::to_string(into->kept.id.value()) + ": undo that merge)";
     throw InvalidArgumentError("no merge into " + region + " can be undone: none is among the latest " +
-                               std::to_string(config_.revertibleMerges) + " merges on request");
+                               std::to_string(config_.revertibleMerges) + " merges on request" + hint);
+  }
   if (const std::optional<std::string> why = whyNotRevertible(state_, *latest))
     throw InvalidArgumentError("cannot undo the merge of region " + std::to_string(latest->absorbed.id.value()) +
                                " into " + region + ": " + *why);
