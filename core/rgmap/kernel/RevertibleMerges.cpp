@@ -24,6 +24,26 @@ Region mergedRegion(const RevertibleMerge& m) {
 
 bool eitherRegion(const RevertibleMerge& m, RegionId region) { return region == m.kept.id || region == m.absorbed.id; }
 
+// Whether `m` can be the record of a merge of two regions of this map: what a damaged checkpoint
+// could get wrong and an undo would turn into an inconsistent map.
+bool fitsTheMap(const RgMapState& s, const RevertibleMerge& m) {
+  if (m.kept.id.isNone() || !(m.kept.id < m.absorbed.id) || !(m.absorbed.id < s.nextRegionId) ||
+      s.regions.contains(m.absorbed.id))
+    return false;
+  if (!m.kept.name.empty() && m.kept.name == m.absorbed.name) return false;
+  for (const auto& [name, at] : m.absorbed.objectNames)
+    if (m.kept.objectNames.contains(name)) return false;
+  std::set<GatewayId> gateways = m.kept.gateways;
+  gateways.insert(m.absorbed.gateways.begin(), m.absorbed.gateways.end());
+  if (m.sides.size() != gateways.size()) return false;
+  const auto listed = [](const Region& r, GatewayId g, const std::array<RegionId, 2>& sides) {
+    return r.gateways.contains(g) == (sides[kSideA] == r.id || sides[kSideB] == r.id);
+  };
+  return std::ranges::all_of(m.sides, [&](const auto& entry) {
+    return listed(m.kept, entry.first, entry.second) && listed(m.absorbed, entry.first, entry.second);
+  });
+}
+
 // Why the gateway sides of the merged region `now` are not those the merge made, or nullopt.
 std::optional<std::string> changedSides(const RgMapState& s, const RevertibleMerge& m, const Region& now) {
   for (GatewayId g : now.gateways) {
@@ -55,7 +75,7 @@ std::optional<std::string> whyNotRevertible(const RgMapState& s, const Revertibl
   const RegionId id = m.kept.id;
   const auto found = s.regions.find(id);
   if (found == s.regions.end()) return regionText(id) + " was merged into another region since";
-  if (s.regions.contains(m.absorbed.id)) return regionText(m.absorbed.id) + " exists";
+  if (!fitsTheMap(s, m)) return "the record of the merge does not fit the map (a damaged checkpoint)";
   const Region& now = found->second;
   const Region made = mergedRegion(m);
   const auto later = std::upper_bound(now.scans.begin(), now.scans.end(), m.lastScan);

@@ -5,9 +5,10 @@
 // never merged; merges undo in reverse order; and every unsafe undo is refused with a typed
 // error that says why, changing nothing: no such merge kept, only the latest N kept, the region
 // renamed or merged again since, the robot left it after taking scans, the absorbed region's
-// name taken since.
+// name taken since, a record that does not fit the map (a damaged checkpoint).
 #include <cppunit/extensions/HelperMacros.h>
 
+#include <functional>
 #include <string>
 
 #include "core/common/Errors.h"
@@ -70,6 +71,7 @@ class RgMapUnmergeTest : public CppUnit::TestFixture {
   CPPUNIT_TEST(mergesUndoInReverseOrder);
   CPPUNIT_TEST(onlyTheLatestMergesAreKept);
   CPPUNIT_TEST(unsafeUndosAreRefused);
+  CPPUNIT_TEST(recordsThatDoNotFitAreRefused);
   CPPUNIT_TEST_SUITE_END();
 
  public:
@@ -203,6 +205,26 @@ class RgMapUnmergeTest : public CppUnit::TestFixture {
     std::size_t i = mergedAt;
     while (walking.currentRegionId() == kRoom1) rgnav::testing::feed(walking, inputs.at(i++));
     assertRefused(walking, kRoom1, "the robot took scans in region 2 and left it since");
+  }
+
+  // A record a damaged checkpoint could hold, which an undo would turn into an inconsistent map.
+  void recordsThatDoNotFitAreRefused() {
+    RgMappingKernel k = rgnav::testing::mapped(tourWithCabinet(), tourWithCabinet().size());
+    k.nameRegion(kRoom1, "office");
+    k.mergeRegions(kRoom1, kRoom2, true);
+    const auto damaged = [&](const std::function<void(RevertibleMerge&)>& damage) {
+      RgMapState state = k.state();
+      damage(state.revertibleMerges.back());
+      return RgMappingKernel({}, state);
+    };
+    const std::string why = "the record of the merge does not fit the map";
+    RgMappingKernel extraGateway = damaged([](RevertibleMerge& m) { m.sides[GatewayId{77}] = {RegionId{9}, RegionId{}}; });
+    assertRefused(extraGateway, kRoom1, why);
+    RgMappingKernel sameName = damaged([](RevertibleMerge& m) { m.absorbed.name = "office"; });
+    assertRefused(sameName, kRoom1, why);
+    RgMappingKernel unlisted = damaged([](RevertibleMerge& m) { m.absorbed.gateways.clear(); });
+    assertRefused(unlisted, kRoom1, why);
+    CPPUNIT_ASSERT_EQUAL(kRoom2, k.unmergeRegions(kRoom1));
   }
 };
 
