@@ -1,9 +1,9 @@
 // RgMappingKernelClient: the RG Map of the RGMappingKernel module: regions with descriptions,
 // gateways, the RG graph and paths, names, merges and their undoing, the map's events by ID,
-// export. Names, merges and undoing them are not idempotent: each call carries a new random request ID, kept over its retries,
-// so that the kernel acts on it once however often a lost answer makes the client ask
-// (RGMappingKernel.idl). Errors: BadArgumentError naming the field, NotAvailableError,
-// ModuleFailedError, ModuleUnavailableError (ClientConnection.h).
+// export. Names, merges and undoing them are not idempotent: each call carries a new random
+// request ID, kept over its retries, so that the kernel acts on it once however often a lost
+// answer makes the client ask (RGMappingKernel.idl). Errors: BadArgumentError naming the field,
+// NotAvailableError, ModuleFailedError, ModuleUnavailableError (ClientConnection.h).
 #pragma once
 
 #include <chrono>
