@@ -107,6 +107,11 @@ RegionId RgMappingKernelClient::mergeRegions(RegionId a, RegionId b, bool force)
                           [&](Kernel k) { return RegionId(k->mergeRegions(request, a.value(), b.value(), force)); });
 }
 
+RegionId RgMappingKernelClient::unmergeRegions(RegionId merged) {
+  const RequestId request = newRequestId();
+  return connection_.call("unmergeRegions", [&](Kernel k) { return RegionId(k->unmergeRegions(request, merged.value())); });
+}
+
 RgMapEventBatch RgMappingKernelClient::eventsSince(RgMapEventId afterId, std::uint32_t maxCount) {
   return connection_.call("eventsSince", [&](Kernel k) {
     RGNav::RgMapEventBatch_var b = k->eventsSince(afterId, maxCount, consumer_.c_str());

@@ -1,9 +1,9 @@
 // RgMappingKernelClient: the RG Map of the RGMappingKernel module: regions with descriptions,
-// gateways, the RG graph and paths, names and merges, the map's events by ID, export. Names and
-// merges are not idempotent: each call carries a new random request ID, kept over its retries,
-// so that the kernel acts on it once however often a lost answer makes the client ask
-// (RGMappingKernel.idl). Errors: BadArgumentError naming the field, NotAvailableError,
-// ModuleFailedError, ModuleUnavailableError (ClientConnection.h).
+// gateways, the RG graph and paths, names, merges and their undoing, the map's events by ID,
+// export. Names, merges and undoing them are not idempotent: each call carries a new random
+// request ID, kept over its retries, so that the kernel acts on it once however often a lost
+// answer makes the client ask (RGMappingKernel.idl). Errors: BadArgumentError naming the field,
+// NotAvailableError, ModuleFailedError, ModuleUnavailableError (ClientConnection.h).
 #pragma once
 
 #include <chrono>
@@ -34,6 +34,9 @@ class RgMappingKernelClient : public ModuleClientOf<RGNav::RGMappingKernel> {
   RgMappingKernel::NamedObject objectByName(const std::string& name);
   // Regions that share no gateway are refused (InvalidArgumentError) unless `force`.
   RegionId mergeRegions(RegionId a, RegionId b, bool force = false);
+  // Undoes the latest kept merge on request that made `merged`; returns the restored region
+  // (InvalidArgumentError if there is none or the map changed since, RGMappingKernel.idl).
+  RegionId unmergeRegions(RegionId merged);
   RgMapEventBatch eventsSince(RgMapEventId afterId, std::uint32_t maxCount);
   // The files written, one per line; `directory` is relative to the kernel's export root (""
   // for the root) or absolute inside it (RGMappingKernel.idl). Describing and drawing a large map takes long (an outdoor

@@ -180,6 +180,15 @@ RegionId RgMappingKernelService::mergeRegions(std::uint64_t requestId, RegionId 
   return merged;
 }
 
+RegionId RgMappingKernelService::unmergeRegions(std::uint64_t requestId, RegionId merged) {
+  std::lock_guard lock(mutex_);
+  if (const std::optional<std::uint64_t> restored = requests_.answered(requestId)) return RegionId(*restored);
+  const RegionId restored = kernel_->unmergeRegions(merged);
+  requests_.record(requestId, restored.value());
+  checkpoint();
+  return restored;
+}
+
 MapExportData RgMappingKernelService::exportData(bool occupancy) {
   std::lock_guard lock(mutex_);
   return exportDataOf(*kernel_, occupancy);

@@ -196,6 +196,10 @@ void HostileClient::addKernelCalls(const ExportTraps& traps) {
       [this](K k) { return k->mergeRegions(requestId(), 1, kHugeId, false); }, once);
   add(c, kernel_, "RGMappingKernel.mergeRegions(0)", [this](K k) { return k->mergeRegions(requestId(), 0, 1, false); }, once);
   add(c, kernel_, "RGMappingKernel.mergeRegions(request 0)", [](K k) { return k->mergeRegions(0, 1, 2, false); }, once);
+  add(c, kernel_, "RGMappingKernel.unmergeRegions(unknown)",
+      [this](K k) { return k->unmergeRegions(requestId(), kHugeId); }, once);
+  add(c, kernel_, "RGMappingKernel.unmergeRegions(0)", [this](K k) { return k->unmergeRegions(requestId(), 0); }, once);
+  add(c, kernel_, "RGMappingKernel.unmergeRegions(request 0)", [](K k) { return k->unmergeRegions(0, 1); }, once);
   add(c, kernel_, "RGMappingKernel.eventsSince(huge)",
       [](K k) { return k->eventsSince(kHugeId, kHugeCount, kOverlong.c_str()); });
   add(c, kernel_, "RGMappingKernel.eventsSince(control)", [](K k) { return k->eventsSince(0, 0, kControl); });

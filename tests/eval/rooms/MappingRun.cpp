@@ -46,6 +46,7 @@ MappingRun mapRoomTour(const OccupancyGrid& grid, const GroundTruth& truth, cons
   pipeline.finish();
   out.map = finalMapOf(pipeline.kernel());
   busy += Clock::now() - started;
+  if (setup.atEnd) setup.atEnd(pipeline.kernel());
   out.mappingSeconds = std::chrono::duration<double>(busy).count();
   if (!truePoses.empty()) {
     std::vector<Pose2D> corrected;

@@ -14,6 +14,7 @@
 #pragma once
 
 #include <Eigen/Core>
+#include <functional>
 #include <map>
 #include <optional>
 #include <vector>
@@ -30,6 +31,8 @@ struct MappingRunSetup {
   SimulationConfig simulation;
   double maxTourSeconds = kRoomTourMaxSeconds;  // simulated; a shorter tour for smoke runs
   bool truePoses = false;                       // the kernel gets true poses, SLAM is not run
+  // Called with the kernel once the tour is mapped (e.g. to take its RG graph or occupancy map).
+  std::function<void(const RgMappingKernel&)> atEnd;
 };
 
 // How far the final corrected poses, placed by mapToWorld, lie from the true ones (positions).

@@ -1,0 +1,427 @@
+// RoutePlanner: the RG route joined with region paths (see the header).
+#include "core/nav/planning/RoutePlanner.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <optional>
+#include <queue>
+#include <sstream>
+
+#include "core/common/Errors.h"
+#include "core/lines/ScanPoints.h"
+#include "core/nav/grid/PlanningErrors.h"
+#include "core/nav/planning/RegionGrid.h"
+#include "core/nav/planning/RegionOverlaps.h"
+#include "core/nav/planning/TargetSpacing.h"
+
+namespace rgnav {
+
+namespace {
+
+constexpr double kUnreachable = std::numeric_limits<double>::infinity();
+
+using Polyline = std::vector<Eigen::Vector2d>;
+
+double polylineLength(const Polyline& line) {
+  double length = 0.0;
+  for (std::size_t i = 1; i < line.size(); ++i) length += (line[i] - line[i - 1]).norm();
+  return length;
+}
+
+std::string text(const Eigen::Vector2d& p) {
+  std::ostringstream out;
+  out.precision(2);
+  out << std::fixed << "(" << p.x() << ", " << p.y() << ")";
+  return out.str();
+}
+
+}  // namespace
+
+void validate(const RoutePlannerConfig& c) {
+  const auto positive = [](double v) { return std::isfinite(v) && v > 0.0; };
+  const auto notNegative = [](double v) { return std::isfinite(v) && v >= 0.0; };
+  if (!notNegative(c.robotRadiusM)) throw ConfigError("route planner: robot_radius_m must be >= 0");
+  if (!positive(c.gridResolutionM)) throw ConfigError("route planner: grid_resolution_m must be positive");
+  if (!notNegative(c.startSnapM)) throw ConfigError("route planner: start_snap_m must be >= 0");
+  if (!notNegative(c.crossingSnapM)) throw ConfigError("route planner: crossing_snap_m must be >= 0");
+  if (!positive(c.targetMinSpacingM) || !std::isfinite(c.targetMaxSpacingM) || c.targetMaxSpacingM < c.targetMinSpacingM)
+    throw ConfigError("route planner: 0 < target_min_spacing_m <= target_max_spacing_m must hold");
+  validate(c.region);
+}
+
+// A region's planning grid, its planner and the region paths found between crossing points.
+struct RoutePlanner::RegionEntry {
+  const RegionView* view = nullptr;
+  RegionGrid grid;
+  std::unique_ptr<FramedQuadtreePlanner> planner;
+  std::map<std::pair<std::size_t, std::size_t>, std::optional<Polyline>> between;  // graph node pairs
+
+  Eigen::Vector2d toRegion(const Eigen::Vector2d& mapPoint) const {
+    return transformPoint(inverse(view->summary.frame), mapPoint);
+  }
+  Eigen::Vector2d toMap(const Eigen::Vector2d& regionPoint) const {
+    return transformPoint(view->summary.frame, regionPoint);
+  }
+  bool freeAt(const Eigen::Vector2d& mapPoint) const { return grid.freeAt(toRegion(mapPoint)); }
+  std::optional<Eigen::Vector2d> nearestFree(const Eigen::Vector2d& mapPoint, double maxM) const {
+    const auto p = grid.nearestFree(toRegion(mapPoint), maxM);
+    if (!p) return std::nullopt;
+    return toMap(*p);
+  }
+  // The region path between two free points (map frame), or none.
+  std::optional<Polyline> path(const Eigen::Vector2d& from, const Eigen::Vector2d& to) const {
+    try {
+      const CellUnitPath cells = planner->plan(grid.toCells(toRegion(from)), grid.toCells(toRegion(to)));
+      Polyline out;
+      out.reserve(cells.points.size());
+      for (const Eigen::Vector2d& c : cells.points) out.push_back(toMap(grid.toRegion(c)));
+      out.front() = from;
+      out.back() = to;
+      return out;
+    } catch (const Error&) {  // blocked ends or no connection
+      return std::nullopt;
+    }
+  }
+};
+
+// Where a plan starts or ends: the point in the free cells of one or more regions, the point the
+// caller gave (which may lie off the grid for a snapped start), and a heading to arrive with.
+struct RoutePlanner::Ends {
+  Eigen::Vector2d given = Eigen::Vector2d::Zero();
+  Eigen::Vector2d point = Eigen::Vector2d::Zero();
+  std::vector<RegionId> regions;
+  std::optional<double> heading;
+};
+
+RoutePlanner::RoutePlanner(const RoutePlannerConfig& config) : config_(config) { validate(config_); }
+
+void RoutePlanner::setMap(PlanningMap map) {
+  // The map revision is the change marker the kernel gives: a new revision rebuilds the region
+  // grids as they are planned on next; the same revision keeps them.
+  const bool same = map.revision == map_.revision;
+  map_ = std::move(map);
+  if (!same) {
+    regions_.clear();
+    passages_.reset();
+    return;
+  }
+  for (auto it = regions_.begin(); it != regions_.end();) {
+    const auto view = std::find_if(map_.regions.begin(), map_.regions.end(),
+                                   [&](const RegionView& r) { return r.summary.id == it->first; });
+    if (view == map_.regions.end()) {
+      it = regions_.erase(it);
+    } else {
+      it->second->view = &*view;
+      ++it;
+    }
+  }
+}
+
+RoutePlanner::RegionEntry& RoutePlanner::entry(RegionId region) const {
+  if (const auto it = regions_.find(region); it != regions_.end()) return *it->second;
+  const auto view = std::find_if(map_.regions.begin(), map_.regions.end(),
+                                 [&](const RegionView& r) { return r.summary.id == region; });
+  if (view == map_.regions.end()) throw NoPathError("region " + std::to_string(region.value()) + " is not in the map");
+  auto made = std::make_shared<RegionEntry>();
+  made->view = &*view;
+  made->grid = buildRegionGrid(*view, config_.gridResolutionM, config_.robotRadiusM);
+  made->planner = std::make_unique<FramedQuadtreePlanner>(made->grid.grid, config_.region);
+  return *regions_.emplace(region, std::move(made)).first->second;
+}
+
+std::vector<RegionId> RoutePlanner::regionsAt(const Eigen::Vector2d& point) const {
+  std::vector<RegionId> out;
+  for (const RegionView& r : map_.regions)
+    if (entry(r.summary.id).freeAt(point)) out.push_back(r.summary.id);
+  return out;
+}
+
+RoutePlanner::Ends RoutePlanner::startOf(const Pose2D& start) const {
+  const Eigen::Vector2d p(start.x, start.y);
+  if (!p.allFinite()) throw InvalidArgumentError("route planner: the start is not a finite point");
+  Ends ends{p, p, regionsAt(p), std::nullopt};
+  if (!ends.regions.empty()) return ends;
+  // Placed in the nearest region within startSnapM.
+  double best = kUnreachable;
+  for (const RegionView& r : map_.regions) {
+    const auto snapped = entry(r.summary.id).nearestFree(p, config_.startSnapM);
+    if (snapped && (*snapped - p).norm() < best) {
+      best = (*snapped - p).norm();
+      ends.point = *snapped;
+      ends.regions = {r.summary.id};
+    }
+  }
+  if (ends.regions.empty())
+    throw NoPathError("the start " + text(p) + " lies outside every region (none within " +
+                      std::to_string(config_.startSnapM) + " m)");
+  return ends;
+}
+
+RoutePlanner::Ends RoutePlanner::goalOf(const PlanGoal& goal, const Eigen::Vector2d& start) const {
+  const auto regionNamed = [&](const std::string& name) -> RegionId {
+    for (const RegionView& r : map_.regions)
+      if (r.summary.name == name) return r.summary.id;
+    throw NoPathError("no region is named \"" + name + "\"");
+  };
+  switch (goal.kind) {
+    case PlanGoal::Kind::Point: {
+      if (!goal.point.allFinite()) throw InvalidArgumentError("route planner: the goal is not a finite point");
+      Ends ends{goal.point, goal.point, regionsAt(goal.point), std::nullopt};
+      if (!ends.regions.empty()) return ends;
+      for (const RegionView& r : map_.regions)
+        if (r.freespace.isFreeAt(entry(r.summary.id).toRegion(goal.point)))
+          throw NoPathError("the goal " + text(goal.point) + " lies in an obstacle of region " +
+                            std::to_string(r.summary.id.value()) + " (or closer to one than the robot radius)");
+      throw NoPathError("the goal " + text(goal.point) + " lies outside every region");
+    }
+    case PlanGoal::Kind::Region:
+    case PlanGoal::Kind::RegionName: {
+      const RegionId id = goal.kind == PlanGoal::Kind::Region ? goal.region : regionNamed(goal.name);
+      const RegionEntry& region = entry(id);
+      const double reach = (region.view->boxMax - region.view->boxMin).norm() + 1.0;
+      const auto p = region.nearestFree(region.toMap(region.view->centroid), reach);
+      if (!p) throw NoPathError("region " + std::to_string(id.value()) + " has no free cell the robot fits in");
+      return {*p, *p, {id}, std::nullopt};
+    }
+    case PlanGoal::Kind::Object:
+      for (const RegionView& r : map_.regions)
+        for (const RectangleObjectView& object : r.objects) {
+          if (object.name != goal.name) continue;
+          const RegionEntry& region = entry(r.summary.id);
+          const Eigen::Vector2d centre = region.toMap({object.pose.x, object.pose.y});
+          // In front of it: the free cell nearest to its centre, preferring the side the robot
+          // comes from when two are about as near.
+          const double reach = 0.5 * std::hypot(object.lengthM, object.widthM) + config_.robotRadiusM + 1.0;
+          const Eigen::Vector2d towardStart = centre + (start - centre).normalized() * 1e-3;
+          const auto p = region.nearestFree(towardStart, reach);
+          if (!p) throw NoPathError("no free pose in front of object \"" + goal.name + "\"");
+          const Eigen::Vector2d facing = centre - *p;
+          return {*p, *p, {r.summary.id}, std::atan2(facing.y(), facing.x())};
+        }
+      throw NoPathError("no object is named \"" + goal.name + "\"");
+  }
+  throw InvalidArgumentError("route planner: unknown goal kind");
+}
+
+const std::vector<RoutePlanner::Passage>& RoutePlanner::passages() const {
+  if (passages_) return *passages_;
+  std::vector<Passage> out;
+  for (std::size_t i = 0; i < map_.regions.size(); ++i)
+    for (std::size_t k = i + 1; k < map_.regions.size(); ++k) {
+      const RegionView &a = map_.regions[i], &b = map_.regions[k];
+      for (const Eigen::Vector2d& p : overlapTransfers(entry(a.summary.id).grid, a.summary.frame, entry(b.summary.id).grid,
+                                                       b.summary.frame, config_.overlapSampleM, config_.overlapMinAreaM2))
+        out.push_back({GatewayId{}, {{p, a.summary.id, 0}, {p, b.summary.id, 0}}});
+    }
+  for (const GatewayView& gateway : map_.gateways) {
+    if (!gateway.sideA.isNone() && !gateway.sideB.isNone()) continue;  // in the RG graph
+    Passage passage{gateway.id, {}};
+    for (std::size_t c = 0; c < gateway.crossingPoints.size(); ++c)
+      for (const RegionView& r : map_.regions)
+        if (entry(r.summary.id).nearestFree(gateway.crossingPoints[c], config_.crossingSnapM))
+          passage.ends.push_back({gateway.crossingPoints[c], r.summary.id, c});
+    if (passage.ends.size() > 1) out.push_back(std::move(passage));
+  }
+  return passages_.emplace(std::move(out));
+}
+
+Plan RoutePlanner::plan(const Pose2D& startPose, const PlanGoal& goal) const {
+  const Ends start = startOf(startPose);
+  const Ends end = goalOf(goal, start.point);
+
+  // The search's nodes: the RG graph's crossing points, the ends of every other passage, the
+  // start and the goal.
+  constexpr std::size_t kNoPassage = std::numeric_limits<std::size_t>::max();
+  struct Node {
+    Eigen::Vector2d position;
+    RegionId region;
+    bool onGateway = false;           // a crossing point (to be placed on a free cell)
+    std::size_t passage = kNoPassage;  // index in passages(); none for RG graph nodes, start, goal
+    std::size_t crossing = 0;         // a gateway passage's: the crossing point's index
+  };
+  std::vector<Node> nodes;
+  for (const GraphNodeView& n : map_.graph.nodes) nodes.push_back({n.position, n.region, true});
+  const std::size_t graphNodes = nodes.size();
+  std::vector<std::vector<std::size_t>> passageNodes(passages().size());
+  for (std::size_t k = 0; k < passages().size(); ++k)
+    for (std::size_t e = 0; e < passages()[k].ends.size(); ++e) {
+      passageNodes[k].push_back(nodes.size());
+      const PassageEnd& end = passages()[k].ends[e];
+      nodes.push_back({end.position, end.region, !passages()[k].gateway.isNone(), k, end.crossing});
+    }
+  const std::size_t s = nodes.size(), g = nodes.size() + 1;
+  nodes.push_back({start.point, RegionId{}, false});
+  nodes.push_back({end.point, RegionId{}, false});
+  std::map<RegionId, std::vector<std::size_t>> members;
+  for (std::size_t i = 0; i < s; ++i) members[nodes[i].region].push_back(i);
+  std::map<std::pair<std::size_t, std::size_t>, double> learned;  // region edges' learned costs
+  for (const GraphEdgeView& e : map_.graph.edges)
+    if (!e.throughGateway()) learned[std::minmax(e.from, e.to)] = e.costM;
+
+  // The region path of a link, cached per region for pairs of graph and transfer nodes. A crossing
+  // point in a blocked cell (inflation at a narrow door) is moved to the nearest free cell.
+  std::map<std::pair<std::size_t, std::size_t>, std::optional<Polyline>> endLinks;
+  const auto regionPath = [&](RegionId region, std::size_t a, std::size_t b) -> const std::optional<Polyline>& {
+    RegionEntry& r = entry(region);
+    const bool cached = a < s && b < s;
+    if (cached)
+      if (const auto it = r.between.find({a, b}); it != r.between.end()) return it->second;
+    const auto placed = [&](std::size_t i) -> std::optional<Eigen::Vector2d> {
+      return nodes[i].onGateway ? r.nearestFree(nodes[i].position, config_.crossingSnapM) : std::optional(nodes[i].position);
+    };
+    std::optional<Polyline> found;
+    const auto from = placed(a), to = placed(b);
+    if (from && to) found = r.path(*from, *to);
+    if (found) {
+      if (nodes[a].onGateway) found->insert(found->begin(), nodes[a].position);
+      if (nodes[b].onGateway) found->push_back(nodes[b].position);
+    }
+    if (cached) return r.between.emplace(std::pair{a, b}, std::move(found)).first->second;
+    return endLinks.insert_or_assign({a, b}, std::move(found)).first->second;
+  };
+
+  // Lazy A* (Cohen, Phillips, Likhachev, "Planning Single-Arm Manipulations with n-Arm Robots",
+  // SoCS 2014: lazy weighted A*, here unweighted): a link through a region enters the open list
+  // with its lower bound (its learned cost or straight-line length) and its region path is planned
+  // only when that entry comes first, so that region paths are planned for the few links near the
+  // best route, not for every link relaxed.
+  struct Entry {
+    double f = 0.0, g = 0.0;
+    std::size_t node = 0, from = 0;
+    RegionId region;        // none: through a gateway or an overlap transfer
+    bool verified = false;  // g is the true cost via `from`
+    bool operator>(const Entry& o) const { return f > o.f; }
+  };
+  struct Via {
+    std::size_t from = 0;
+    RegionId region;
+  };
+  std::vector<double> best(nodes.size(), kUnreachable);  // best verified g
+  std::vector<bool> closed(nodes.size(), false);
+  std::vector<std::optional<Via>> via(nodes.size());
+  std::priority_queue<Entry, std::vector<Entry>, std::greater<>> open;
+  const auto heuristic = [&](std::size_t i) { return (nodes[i].position - end.point).norm(); };
+  const auto push = [&](std::size_t from, std::size_t to, double g, RegionId region, bool verified) {
+    if (!std::isfinite(g) || closed[to] || g >= best[to]) return;
+    if (verified) best[to] = g;
+    open.push({g + heuristic(to), g, to, from, region, verified});
+  };
+  const auto lowerBound = [&](std::size_t a, std::size_t b) {
+    const double straight = (nodes[a].position - nodes[b].position).norm();
+    const auto it = learned.find(std::minmax(a, b));
+    return it == learned.end() ? straight : std::max(straight, it->second);
+  };
+  const auto inEnds = [](const Ends& e, RegionId r) { return std::find(e.regions.begin(), e.regions.end(), r) != e.regions.end(); };
+  const auto throughRegion = [&](std::size_t u, RegionId r, double at) {
+    if (inEnds(end, r)) push(u, g, at + lowerBound(u, g), r, false);
+    for (std::size_t v : members[r])
+      if (v != u) push(u, v, at + lowerBound(u, v), r, false);
+  };
+
+  push(s, s, 0.0, RegionId{}, true);
+  while (!open.empty()) {
+    const Entry e = open.top();
+    open.pop();
+    if (closed[e.node]) continue;
+    if (!e.verified) {
+      const auto& path = regionPath(e.region, e.from, e.node);
+      if (path) push(e.from, e.node, best[e.from] + std::max(e.g - best[e.from], polylineLength(*path)), e.region, true);
+      continue;
+    }
+    closed[e.node] = true;
+    if (e.node != s) via[e.node] = Via{e.from, e.region};
+    if (e.node == g) break;
+    const double at = best[e.node];
+    if (e.node == s) {
+      for (RegionId r : start.regions) throughRegion(s, r, at);
+      continue;
+    }
+    throughRegion(e.node, nodes[e.node].region, at);
+    if (nodes[e.node].passage != kNoPassage) {
+      for (std::size_t v : passageNodes[nodes[e.node].passage])
+        if (v != e.node) push(e.node, v, at + (nodes[v].position - nodes[e.node].position).norm(), RegionId{}, true);
+    } else {
+      for (const GraphEdgeView& edge : map_.graph.edges)
+        if (edge.throughGateway() && (edge.from == e.node || edge.to == e.node))
+          push(e.node, edge.from == e.node ? edge.to : edge.from, at + edge.costM, RegionId{}, true);
+    }
+  }
+  if (!via[g]) {
+    std::string from, to;
+    for (RegionId r : start.regions) from += (from.empty() ? "" : ", ") + std::to_string(r.value());
+    for (RegionId r : end.regions) to += (to.empty() ? "" : ", ") + std::to_string(r.value());
+    throw NoPathError("no route from region " + from + " to region " + to + " in the RG map");
+  }
+
+  // The legs in driving order, as one polyline whose points know the region of the leg that
+  // reaches them (a gateway's leg: the region it leads into).
+  std::vector<std::size_t> order{g};
+  while (order.back() != s) order.push_back(via[order.back()]->from);
+  std::reverse(order.begin(), order.end());
+  Plan out;
+  out.mapRevision = map_.revision;
+  std::vector<RegionId> regions;  // the regions passed, in driving order
+  std::vector<Eigen::Vector2d> points{start.point};
+  std::vector<std::size_t> pointRegion{0};
+  for (std::size_t k = 1; k < order.size(); ++k) {
+    const std::size_t a = order[k - 1], b = order[k];
+    if (b < graphNodes) out.route.push_back(map_.graph.nodes[b]);
+    if (nodes[b].onGateway && b >= graphNodes)
+      out.route.push_back({passages()[nodes[b].passage].gateway, nodes[b].crossing, nodes[b].region, nodes[b].position});
+    const Via& step = *via[b];
+    const RegionId region = step.region.isNone() ? nodes[b].region : step.region;
+    if (regions.empty() || regions.back() != region) regions.push_back(region);
+    const Polyline leg = step.region.isNone() ? Polyline{nodes[a].position, nodes[b].position} : *regionPath(region, a, b);
+    for (std::size_t i = 1; i < leg.size(); ++i) {
+      points.push_back(leg[i]);
+      pointRegion.push_back(regions.size() - 1);
+    }
+  }
+  // The start's point belongs to the first region.
+  pointRegion.front() = 0;
+
+  // String pulling across legs: a point is dropped while the shortcut past it stays free in the
+  // grids of the regions between its ends (checked every half cell: a shortcut may clip a blocked
+  // cell's corner by at most a quarter cell, inside the robot-radius inflation).
+  const auto freeIn = [&](const Eigen::Vector2d& p, std::size_t firstRegion, std::size_t lastRegion) {
+    for (std::size_t k = firstRegion; k <= lastRegion; ++k)
+      if (entry(regions[k]).freeAt(p)) return true;
+    return false;
+  };
+  const auto shortcutFree = [&](std::size_t i, std::size_t j) {
+    const Eigen::Vector2d a = points[i], b = points[j];
+    const int samples = std::max(1, static_cast<int>(std::ceil((b - a).norm() / (0.5 * config_.gridResolutionM))));
+    for (int k = 0; k <= samples; ++k)
+      if (!freeIn(a + (b - a) * (double(k) / samples), pointRegion[i], pointRegion[j])) return false;
+    return true;
+  };
+  std::vector<std::size_t> kept{0};
+  for (std::size_t i = 0; i + 1 < points.size();) {
+    std::size_t j = i + 1;
+    while (j + 1 < points.size() && shortcutFree(i, j + 1)) ++j;
+    kept.push_back(j);
+    i = j;
+  }
+  if (start.given != start.point) out.path.push_back(start.given);
+  for (std::size_t i : kept)
+    if (out.path.empty() || (points[i] - out.path.back()).norm() > 1e-9) out.path.push_back(points[i]);
+  out.lengthM = polylineLength(out.path);
+  out.startRegion = regions.front();
+  out.goalRegion = regions.back();
+
+  // Targets, each in the first region from the previous target's on whose free cells it lies.
+  std::size_t current = 0;
+  for (const Pose2D& pose : targetsAlong(out.path, config_.targetMinSpacingM, config_.targetMaxSpacingM, end.heading)) {
+    for (std::size_t k = current; k < regions.size(); ++k)
+      if (entry(regions[k]).freeAt({pose.x, pose.y})) {
+        current = k;
+        break;
+      }
+    out.targets.push_back({pose, regions[current]});
+  }
+  if (!out.targets.empty()) out.targets.back().region = out.goalRegion;
+  return out;
+}
+
+}  // namespace rgnav

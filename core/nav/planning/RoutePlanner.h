@@ -1,0 +1,133 @@
+// RoutePlanner: plans with an RG map (thesis 5.4): a global route on the RG graph joined with paths
+// inside the regions it passes, cut into intermediate target poses for the collision avoidance
+// (thesis 5.5.3: 0.5 to 2 m apart), each with the region it lies in.
+//   - Region grids (RegionGrid.h): a region's line map rendered into a grid at `gridResolutionM`
+//     within its freespace, walls inflated by the robot radius, built once per region and map
+//     revision.
+//   - Route: A* over the RG graph's crossing points. Deliberate differences from the thesis (whose
+//     region edges cost their learned cost, initially the Euclidean length): a region edge costs
+//     at least the length of the region path between its crossing points, and the start and goal
+//     join the graph with their region path lengths, so that a route never relies on a straight
+//     line through walls; where two regions' free cells overlap, the route may pass there
+//     (RegionOverlaps.h); and a gateway that is not in the RG graph yet because the region on one
+//     of its sides is unknown (the detector saw it, the kernel has not placed it between two
+//     regions) joins the regions in whose free cells its crossing points lie.
+//   - Region paths: the framed-quadtree planner (FramedQuadtreePlanner.h) in each region between
+//     its entry and exit points; a gateway is crossed on the straight line between its two
+//     crossing points. Ours: the joined path is then string-pulled across the legs (a crossing
+//     point is dropped where the shortcut stays free in the grids of the regions it passes), so
+//     that the path does not kink at every crossing point.
+// Goals: a point of the map frame, a region (by ID or name: its free point nearest the freespace
+// centroid), or a named object (a free pose in front of it, facing it). A start outside every
+// region is placed in the nearest region within `startSnapM`.
+#pragma once
+
+#include <Eigen/Core>
+#include <map>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "core/common/Pose2D.h"
+#include "core/nav/planning/FramedQuadtreePlanner.h"
+#include "core/nav/planning/PlanningMap.h"
+
+namespace rgnav {
+
+struct RoutePlannerConfig {
+  double robotRadiusM = 0.25;
+  double gridResolutionM = 0.05;
+  double startSnapM = 1.0;          // a start this close to a region's free cells is placed in it
+  double crossingSnapM = 0.5;       // a crossing point in a blocked cell moves to the nearest free one
+  double overlapSampleM = 0.15;     // regions' free cells are compared on this lattice (RegionOverlaps.h)
+  double overlapMinAreaM2 = 0.25;   // smaller overlaps are no transfer
+  double targetMinSpacingM = 0.5;   // intermediate targets (thesis 5.5.3)
+  double targetMaxSpacingM = 2.0;
+  FramedQuadtreePlannerConfig region{.wallCostDistanceM = 0.5, .wallCostWeight = 1.0};
+};
+
+// Throws ConfigError naming the first value out of range.
+void validate(const RoutePlannerConfig& config);
+
+struct PlanGoal {
+  enum class Kind { Point, Region, RegionName, Object };
+  Kind kind = Kind::Point;
+  Eigen::Vector2d point = Eigen::Vector2d::Zero();  // Kind::Point: map frame
+  RegionId region;                                  // Kind::Region
+  std::string name;                                 // Kind::RegionName, Kind::Object
+
+  static PlanGoal at(const Eigen::Vector2d& p) { return {Kind::Point, p, {}, {}}; }
+  static PlanGoal inRegion(RegionId r) { return {Kind::Region, Eigen::Vector2d::Zero(), r, {}}; }
+  static PlanGoal inRegionNamed(std::string n) { return {Kind::RegionName, Eigen::Vector2d::Zero(), {}, std::move(n)}; }
+  static PlanGoal atObject(std::string n) { return {Kind::Object, Eigen::Vector2d::Zero(), {}, std::move(n)}; }
+};
+
+struct TargetPose {
+  Pose2D pose;      // map frame; theta: the direction of travel (at the goal: of the last leg,
+                    // or facing the object for an object goal)
+  RegionId region;  // the region the target lies in
+
+  friend bool operator==(const TargetPose&, const TargetPose&) = default;
+};
+
+struct Plan {
+  std::vector<TargetPose> targets;    // driving order, 0.5 to 2 m apart; the goal last
+  std::vector<GraphNodeView> route;   // crossing points passed, driving order (in pairs per gateway;
+                                      // for a gateway not in the RG graph yet, `side` is the index
+                                      // of the crossing point among the gateway's)
+  std::vector<Eigen::Vector2d> path;  // the whole path as a polyline, map frame, start first
+  double lengthM = 0.0;               // length of `path`: the predicted driving distance
+  RegionId startRegion, goalRegion;
+  RgMapEventId mapRevision = 0;       // the map it was planned on
+};
+
+class RoutePlanner {
+ public:
+  // Throws ConfigError for a bad configuration.
+  explicit RoutePlanner(const RoutePlannerConfig& config = {});
+
+  // Replaces the map; region grids of an unchanged revision are kept.
+  void setMap(PlanningMap map);
+  const PlanningMap& map() const { return map_; }
+
+  // Plans from `start` (map frame) to `goal`. Throws NoPathError (PlanningErrors.h) naming why:
+  // a start outside every region (beyond startSnapM), a goal outside every region or inside an
+  // obstacle, an unknown region or name, no route between the regions, no path inside a region.
+  // InvalidArgumentError for a non-finite start or goal point.
+  Plan plan(const Pose2D& start, const PlanGoal& goal) const;
+
+  // The regions in whose planning grid `point` (map frame) lies in a free cell: where the robot
+  // can stand in the map.
+  std::vector<RegionId> regionsAt(const Eigen::Vector2d& point) const;
+
+ private:
+  struct RegionEntry;
+  struct Ends;
+  // Ways between regions beyond the RG graph's gateway edges, each joining every two of its ends
+  // at their straight-line distance: an overlap of two regions (both ends at one point), or a
+  // gateway the RG graph does not hold yet (a side's region unknown), its crossing points placed
+  // in the regions whose free cells hold them.
+  struct PassageEnd {
+    Eigen::Vector2d position;  // map frame
+    RegionId region;
+    std::size_t crossing = 0;  // a gateway's: the index of its crossing point
+  };
+  struct Passage {
+    GatewayId gateway;  // none: an overlap
+    std::vector<PassageEnd> ends;
+  };
+  // Found on first use after a map change.
+  const std::vector<Passage>& passages() const;
+  // The region's grid and planner, built on first use. Throws NoPathError for an unknown region.
+  RegionEntry& entry(RegionId region) const;
+  Ends startOf(const Pose2D& start) const;
+  Ends goalOf(const PlanGoal& goal, const Eigen::Vector2d& start) const;
+
+  RoutePlannerConfig config_;
+  PlanningMap map_;
+  mutable std::map<RegionId, std::shared_ptr<RegionEntry>> regions_;  // built on first use
+  mutable std::optional<std::vector<Passage>> passages_;
+};
+
+}  // namespace rgnav
