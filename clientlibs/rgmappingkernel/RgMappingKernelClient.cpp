@@ -107,6 +107,11 @@ RegionId RgMappingKernelClient::mergeRegions(RegionId a, RegionId b, bool force)
                           [&](Kernel k) { return RegionId(k->mergeRegions(request, a.value(), b.value(), force)); });
 }
 
+RegionId RgMappingKernelClient::unmergeRegions(RegionId merged) {
+  const RequestId request = newRequestId();
+  return connection_.call("unmergeRegions", [&](Kernel k) { return RegionId(k->unmergeRegions(request, merged.value())); });
+}
+
 void RgMappingKernelClient::reportDoorState(GatewayId door, bool traversable, std::uint64_t request) {
   const RequestId id = request != 0 ? request : newRequestId();
   connection_.call("reportDoorState", [&](Kernel k) { k->reportDoorState(id, door.value(), traversable); });

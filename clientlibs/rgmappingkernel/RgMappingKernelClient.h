@@ -1,9 +1,10 @@
 // RgMappingKernelClient: the RG Map of the RGMappingKernel module: regions with descriptions,
-// gateways, the RG graph and paths, names, merges and door states, the map's events by ID,
-// export. Names, merges and door states are not idempotent: each call carries a new random
-// request ID, kept over its retries, so that the kernel acts on it once however often a lost
-// answer makes the client ask (RGMappingKernel.idl). Errors: BadArgumentError naming the field,
-// NotAvailableError, ModuleFailedError, ModuleUnavailableError (ClientConnection.h).
+// gateways, the RG graph and paths, names, merges and their undoing, door states, the map's
+// events by ID, export. Names, merges, undoing them and door states are not idempotent: each call
+// carries a new random request ID, kept over its retries, so that the kernel acts on it once
+// however often a lost answer makes the client ask (RGMappingKernel.idl). Errors:
+// BadArgumentError naming the field, NotAvailableError, ModuleFailedError,
+// ModuleUnavailableError (ClientConnection.h).
 #pragma once
 
 #include <chrono>
@@ -34,6 +35,9 @@ class RgMappingKernelClient : public ModuleClientOf<RGNav::RGMappingKernel> {
   RgMappingKernel::NamedObject objectByName(const std::string& name);
   // Regions that share no gateway are refused (InvalidArgumentError) unless `force`.
   RegionId mergeRegions(RegionId a, RegionId b, bool force = false);
+  // Undoes the latest kept merge on request that made `merged`; returns the restored region
+  // (InvalidArgumentError if there is none or the map changed since, RGMappingKernel.idl).
+  RegionId unmergeRegions(RegionId merged);
   // The door of gateway `door` was found open (traversable) or blocked (thesis 5.4). `request` 0
   // makes a new request ID; a module that relays a request of its own passes that ID on, so that
   // the kernel acts once however often the relayed request is retried.

@@ -80,8 +80,9 @@ class RgMappingKernelConvertTest : public CppUnit::TestFixture {
     CPPUNIT_ASSERT(fromIdl(toIdl(s)) == s);
     RgMapEventBatch b;
     b.events = {{7, RgMapEventKind::RegionsMerged, RegionId{2}, RegionId{5}, GatewayId{}, 311},
-                {8, RgMapEventKind::GatewayNeutralised, RegionId{2}, RegionId{}, GatewayId{4}, 311}};
-    b.latestId = 8;
+                {8, RgMapEventKind::GatewayNeutralised, RegionId{2}, RegionId{}, GatewayId{4}, 311},
+                {9, RgMapEventKind::RegionsUnmerged, RegionId{2}, RegionId{5}, GatewayId{}, 318}};
+    b.latestId = 9;
     b.lastScan = 320;
     b.endOfData = true;
     const RgMapEventBatch back = fromIdl(toIdl(b));

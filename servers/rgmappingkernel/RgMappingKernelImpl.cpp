@@ -98,6 +98,14 @@ RGNav::RegionId RgMappingKernelImpl::mergeRegions(RGNav::RequestId requestId, RG
   });
 }
 
+RGNav::RegionId RgMappingKernelImpl::unmergeRegions(RGNav::RequestId requestId, RGNav::RegionId merged) {
+  return serve(kArgs, [&] {
+    wire::requireId(requestId, "requestId");
+    wire::requireId(merged, "merged");
+    return service_.unmergeRegions(requestId, RegionId(merged)).value();
+  });
+}
+
 void RgMappingKernelImpl::reportDoorState(RGNav::RequestId requestId, RGNav::GatewayId door,
                                           CORBA::Boolean traversable) {
   serve(kArgs, [&] {

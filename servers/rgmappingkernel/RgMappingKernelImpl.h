@@ -29,6 +29,7 @@ class RgMappingKernelImpl : public ServiceServant<POA_RGNav::RGMappingKernel> {
   RGNav::NamedObject objectByName(const char* name) override;
   RGNav::RegionId mergeRegions(RGNav::RequestId requestId, RGNav::RegionId a, RGNav::RegionId b,
                                CORBA::Boolean force) override;
+  RGNav::RegionId unmergeRegions(RGNav::RequestId requestId, RGNav::RegionId merged) override;
   void reportDoorState(RGNav::RequestId requestId, RGNav::GatewayId door, CORBA::Boolean traversable) override;
   RGNav::RgMapEventBatch* eventsSince(RGNav::RgMapEventId afterId, CORBA::ULong maxCount, const char* consumer) override;
   char* exportMap(const char* directory, const char* name, CORBA::Boolean occupancy) override;

@@ -180,6 +180,15 @@ RegionId RgMappingKernelService::mergeRegions(std::uint64_t requestId, RegionId 
   return merged;
 }
 
+RegionId RgMappingKernelService::unmergeRegions(std::uint64_t requestId, RegionId merged) {
+  std::lock_guard lock(mutex_);
+  if (const std::optional<std::uint64_t> restored = requests_.answered(requestId)) return RegionId(*restored);
+  const RegionId restored = kernel_->unmergeRegions(merged);
+  requests_.record(requestId, restored.value());
+  checkpoint();
+  return restored;
+}
+
 void RgMappingKernelService::reportDoorState(std::uint64_t requestId, GatewayId door, bool traversable) {
   std::lock_guard lock(mutex_);
   if (requests_.answered(requestId)) return;

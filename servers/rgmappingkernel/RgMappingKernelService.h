@@ -9,13 +9,13 @@
 // never learned of: "pose_revisions_not_kept"). It tells
 // the ScanMapper which revision its last checkpoint holds, so that the ScanMapper keeps only the
 // revisions after it (RevisionFollowers.h). It checkpoints the map atomically after every batch
-// that changed its structure, after every name or merge, at least every `checkpointScans` scans,
+// that changed its structure, after every name, merge or undone merge, at least every `checkpointScans` scans,
 // and at the end, with the scans' laser data in a journal beside it (`checkpointFile`.scans,
 // RgMapCodec.h): each checkpoint appends the new scans to the journal, then replaces the map. The
 // files are written by a thread of their own (CheckpointWriter.h), so no call waits for them; one
 // that cannot be written degrades the module and is retried with backoff.
 // After a restart it resumes after the last scan, event and pose revision the checkpoint holds.
-// Names, merges and door states carry request IDs and act once per ID (RequestLog.h).
+// Names, merges, undone merges and door states carry request IDs and act once per ID (RequestLog.h).
 #pragma once
 
 #include <mutex>
@@ -57,13 +57,14 @@ class RgMappingKernelService {
   std::vector<GatewayView> gateways();
   GraphView graph();
   PathView findPath(const RgPlace& start, const RgPlace& goal);
-  // Names, name removals and merges act once per requestId: a repeated ID gets the first answer.
+  // Names, name removals, merges and undone merges act once per requestId: a repeated ID gets the first answer.
   void nameRegion(std::uint64_t requestId, RegionId id, const std::string& name);
   RegionId regionByName(const std::string& name);
   void nameObject(std::uint64_t requestId, RegionId region, const Eigen::Vector2d& atInRegion, const std::string& name);
   // Throws NotAvailableError if no object has the name.
   RgMappingKernel::NamedObject objectByName(const std::string& name);
   RegionId mergeRegions(std::uint64_t requestId, RegionId a, RegionId b, bool force);
+  RegionId unmergeRegions(std::uint64_t requestId, RegionId merged);
   // A door found open or blocked (RgMappingKernel::recordDoorState), once per requestId.
   void reportDoorState(std::uint64_t requestId, GatewayId door, bool traversable);
   RgMapEventBatch eventsSince(RgMapEventId afterId, std::size_t maxCount);

@@ -198,6 +198,10 @@ void HostileClient::addKernelCalls(const ExportTraps& traps) {
       [this](K k) { return k->mergeRegions(requestId(), 1, kHugeId, false); }, once);
   add(c, kernel_, "RGMappingKernel.mergeRegions(0)", [this](K k) { return k->mergeRegions(requestId(), 0, 1, false); }, once);
   add(c, kernel_, "RGMappingKernel.mergeRegions(request 0)", [](K k) { return k->mergeRegions(0, 1, 2, false); }, once);
+  add(c, kernel_, "RGMappingKernel.unmergeRegions(unknown)",
+      [this](K k) { return k->unmergeRegions(requestId(), kHugeId); }, once);
+  add(c, kernel_, "RGMappingKernel.unmergeRegions(0)", [this](K k) { return k->unmergeRegions(requestId(), 0); }, once);
+  add(c, kernel_, "RGMappingKernel.unmergeRegions(request 0)", [](K k) { return k->unmergeRegions(0, 1); }, once);
   add(c, kernel_, "RGMappingKernel.reportDoorState(unknown)",
       [this](K k) { k->reportDoorState(requestId(), kHugeId, false); }, once);
   add(c, kernel_, "RGMappingKernel.reportDoorState(0)", [this](K k) { k->reportDoorState(requestId(), 0, false); }, once);

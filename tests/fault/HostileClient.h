@@ -2,7 +2,8 @@
 // (the simulator's or a log playback's Laser and Base, the simulator's GroundTruth, ScanMapper,
 // GatewayDetection, the RG Mapping Kernel, the demo set's PathPlanning module and the watchdog) with arguments no well-behaved client sends: NaN and infinite coordinates, IDs 0 and
 // 2^64-1, counts of 2^32-1, names with control characters or over the length bound, request ID
-// 0, merges of a region with itself and with a region that does not exist, exports to /etc, to
+// 0, merges of a region with itself and with a region that does not exist, undoing merges into
+// regions that do not exist, exports to /etc, to
 // a directory behind a symbolic link and over a symbolic link, and unknown watchdog modules.
 // None of them may change the map: valid names, merges and module control are not among them.
 // Calls go over raw IDL (the client libraries check some arguments before sending them) through

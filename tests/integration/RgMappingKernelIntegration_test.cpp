@@ -2,8 +2,8 @@
 // GatewayDetection -> kernel): the maps of the Intel, Freiburg 079 and Freiburg 101 logs end
 // structurally consistent (references both ways, a gateway joins at most two regions, neutralised
 // exactly when both sides are the same region, no empty region); on Intel, regions and paths are
-// served, naming and merging work, the exported files exist, and a restart by the operator
-// resumes from the checkpoint with the same map; and a kernel that lags far behind (small
+// served, naming and merging work, the exported files exist, a restart by the operator resumes
+// from the checkpoint with the same map, and a forced merge made before it is undone after it; and a kernel that lags far behind (small
 // fetches) still ends with exactly the state the in-process chain gives (MappingPipeline), on
 // Freiburg 079 with its dozens of pose revisions: the map does not depend on the modules' timing.
 #include <cppunit/extensions/HelperMacros.h>
@@ -253,13 +253,26 @@ class RgMappingKernelIntegrationTest : public CppUnit::TestFixture {
     const RgMapEventBatch events = kernel.eventsSince(0, 100000);
     for (std::size_t i = 0; i < events.events.size(); ++i) CPPUNIT_ASSERT_EQUAL(RgMapEventId(i + 1), events.events[i].id);
 
+    // Two regions with no gateway between them merged by force before the restart ...
+    const RegionId forcedInto = kernel.mergeRegions(apart->first, apart->second, true);
+
     const auto old = cluster.describe("RGMappingKernel");
     cluster.watchdog().restartModule("RGMappingKernel");
     cluster.waitFor("RGMappingKernel", runningAgainAfter(old.pid), "restarted");
     const MapSummaryView resumed = waitForEnd(kernel);
     CPPUNIT_ASSERT(resumed == kernel.summary());
-    CPPUNIT_ASSERT_EQUAL(summary.regions, resumed.regions);
-    CPPUNIT_ASSERT_EQUAL(summary.gateways, resumed.gateways);
+    CPPUNIT_ASSERT_EQUAL(summary.regions - 1, resumed.regions);
+    // ... are apart again after it, with their gateway sides and names; a repeated request ID
+    // answers as the first call did without undoing anything more.
+    const auto unmergeOnce = [&] {
+      return raw.call("unmergeRegions", [&](RGNav::RGMappingKernel_ptr k) { return RegionId(k->unmergeRegions(4343, forcedInto.value())); });
+    };
+    CPPUNIT_ASSERT_EQUAL(std::max(apart->first, apart->second), unmergeOnce());
+    CPPUNIT_ASSERT_EQUAL(std::max(apart->first, apart->second), unmergeOnce());
+    CPPUNIT_ASSERT_THROW(kernel.unmergeRegions(forcedInto), InvalidArgumentError);
+    const MapSummaryView undone = kernel.summary();
+    CPPUNIT_ASSERT_EQUAL(summary.regions, undone.regions);
+    CPPUNIT_ASSERT_EQUAL(summary.gateways, undone.gateways);
     CPPUNIT_ASSERT(kernel.gateways() == gateways);
     CPPUNIT_ASSERT_EQUAL(joined.sideA, kernel.regionByName("start room"));
     CPPUNIT_ASSERT_EQUAL(furnished.summary.id, kernel.objectByName("first object").region);

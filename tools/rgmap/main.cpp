@@ -7,13 +7,16 @@
 //       playback with " skipped_lines=… truncated=yes|no"; exit 3 if the map is not of the whole
 //       log (lines skipped or the log cut short) unless --accept-partial
 //   rgnav-rgmap regions | gateways | events
-//   rgnav-rgmap name <region> <name> | merge <a> <b> [--force] | path <region> <x> <y> <region> <x> <y>
+//   rgnav-rgmap name <region> <name> | merge <a> <b> [--force] | unmerge <region>
+//   rgnav-rgmap path <region> <x> <y> <region> <x> <y>
 //   rgnav-rgmap name-object <region> <x> <y> <name> (x, y in the region frame) | object <name>
 //   rgnav-rgmap export <dir> <name> [--occupancy]
 // The kernel writes only below its export root (its --export-root): <dir> is relative to it ("":
 // the root) or an absolute directory inside it.
 // Region IDs and coordinates are checked (StrictArguments.h) before the kernel is asked; a merge
-// of regions that share no gateway is refused by the kernel unless --force. Names are printed
+// of regions that share no gateway is refused by the kernel unless --force; `unmerge <region>`
+// undoes the latest of the kernel's last merges on request into that region (RevertibleMerges.h)
+// and prints the region it restored. Names are printed
 // quoted and escaped (QuotedText.h), so no name can forge an output line.
 #include <chrono>
 #include <cstdio>
@@ -114,7 +117,7 @@ int main(int argc, char** argv) {
   std::string command, naming, robot, label, out, name;
   std::vector<std::string> args;
   bool occupancy = false, quiet = false, force = false, acceptPartial = false;
-  po::options_description desc("rgnav-rgmap <build|regions|gateways|events|name|name-object|object|merge|path|export> [args] [options]");
+  po::options_description desc("rgnav-rgmap <build|regions|gateways|events|name|name-object|object|merge|unmerge|path|export> [args] [options]");
   desc.add_options()
       ("help", "this text")
       ("command", po::value(&command)->required(), "what to do")
@@ -164,6 +167,12 @@ int main(int argc, char** argv) {
       want(2);
       const RegionId a = regionArgument(args[0]), b = regionArgument(args[1]);
       std::printf("merged into region %llu\n", static_cast<unsigned long long>(kernel.mergeRegions(a, b, force).value()));
+    } else if (command == "unmerge") {
+      want(1);
+      const RegionId merged = regionArgument(args[0]);
+      const RegionId restored = kernel.unmergeRegions(merged);
+      std::printf("region %llu restored from region %llu\n", static_cast<unsigned long long>(restored.value()),
+                  static_cast<unsigned long long>(merged.value()));
     } else if (command == "path") {
       want(6);
       const RegionId start = regionArgument(args[0]), goal = regionArgument(args[3]);

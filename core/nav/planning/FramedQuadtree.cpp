@@ -67,6 +67,23 @@ FramedQuadtree::FramedQuadtree(const OccupancyGrid& grid) : width_(grid.width())
     pending.push_back({s.col + half, s.row, half});
     pending.push_back({s.col, s.row, half});
   }
+  linkCellNeighbours(grid);
+}
+
+void FramedQuadtree::linkCellNeighbours(const OccupancyGrid& grid) {
+  cellNeighbourStart_.assign(1, 0);
+  cellNeighbourStart_.reserve(nodeCells_.size() + 1);
+  for (std::size_t node = 0; node < nodeCells_.size(); ++node) {
+    const CellIndex c = nodeCells_[node];
+    for (int dy = -1; dy <= 1; ++dy)
+      for (int dx = -1; dx <= 1; ++dx) {
+        const std::int32_t n = nodeOf({c.col + dx, c.row + dy});
+        if (n == kNone || nodeQuads_[static_cast<std::size_t>(n)] == nodeQuads_[node]) continue;
+        if (dx != 0 && dy != 0 && grid.blocked({c.col + dx, c.row}) && grid.blocked({c.col, c.row + dy})) continue;
+        cellNeighbours_.push_back(n);
+      }
+    cellNeighbourStart_.push_back(static_cast<std::uint32_t>(cellNeighbours_.size()));
+  }
 }
 
 void FramedQuadtree::addQuad(int col, int row, int size) {

@@ -45,12 +45,35 @@ class FramedQuadtree {
   std::int32_t nodeQuad(std::int32_t node) const { return nodeQuads_[static_cast<std::size_t>(node)]; }
   std::size_t freeCellCount() const { return freeCells_; }
 
+  // Calls visit(n) for every graph neighbour n of `node`: the rest of its quad's frame
+  // (forEachFrameNeighbour) and its neighbouring cells in other quads (forEachCellNeighbour).
+  template <class Visit>
+  void forEachNeighbour(std::int32_t node, Visit&& visit) const {
+    forEachFrameNeighbour(node, visit);
+    forEachCellNeighbour(node, visit);
+  }
+  // The other frame nodes of the node's quad: a straight segment inside a free square.
+  template <class Visit>
+  void forEachFrameNeighbour(std::int32_t node, Visit&& visit) const {
+    const Quad& q = quads_[static_cast<std::size_t>(nodeQuad(node))];
+    for (std::int32_t n = q.firstNode; n < q.firstNode + q.nodeCount; ++n)
+      if (n != node) visit(n);
+  }
+  // The (up to 8) neighbouring cells in other quads, a diagonal one only where the step does not
+  // squeeze between two blocked cells (segmentFree's rule at a grid vertex).
+  template <class Visit>
+  void forEachCellNeighbour(std::int32_t node, Visit&& visit) const {
+    const auto i = static_cast<std::size_t>(node);
+    for (std::uint32_t k = cellNeighbourStart_[i]; k < cellNeighbourStart_[i + 1]; ++k) visit(cellNeighbours_[k]);
+  }
+
  private:
   bool contains(CellIndex c) const { return c.col >= 0 && c.row >= 0 && c.col < width_ && c.row < height_; }
   std::size_t index(CellIndex c) const {
     return static_cast<std::size_t>(c.row) * static_cast<std::size_t>(width_) + static_cast<std::size_t>(c.col);
   }
   void addQuad(int col, int row, int size);
+  void linkCellNeighbours(const OccupancyGrid& grid);
 
   int width_ = 0;
   int height_ = 0;
@@ -60,6 +83,8 @@ class FramedQuadtree {
   std::vector<std::int32_t> nodeOfCell_;  // row-major
   std::vector<CellIndex> nodeCells_;
   std::vector<std::int32_t> nodeQuads_;
+  std::vector<std::uint32_t> cellNeighbourStart_;  // per node and one more: its range in cellNeighbours_
+  std::vector<std::int32_t> cellNeighbours_;
 };
 
 }  // namespace rgnav

@@ -5,13 +5,25 @@
 // Graph: a node's neighbours are the other frame cells of its quad (a straight segment inside a
 // free square, any direction) and its 8 neighbouring cells in other quads; start and goal join as
 // temporary nodes linked to the frame of their quad (and to each other when they share one).
-// Smoothing: greedy string pulling (drop intermediate points while the shortcut stays free), then
-// bends moved from cell centres onto the obstacle corners they wrap around while that shortens the
-// path. Every step only shortens the graph's optimum, which is never longer than the octile
-// optimum (a run of octile moves inside a free quad is no shorter than the straight segment
-// between its ends), so neither is the returned path.
+// Search: without wall costs, Lazy Theta* (Nash, Koenig & Tovey, "Lazy Theta*: Any-Angle Path
+// Planning and Path Length Analysis in 3D", AAAI 2010) over that graph: a node takes its
+// predecessor's parent as its own, and the line of sight is checked (segmentFree) when it is
+// expanded; if blocked, its best expanded neighbour becomes the parent and the node is queued
+// again with that g unless it still leads the queue. So a node is expanded only with the length of
+// a real free path, and since a shortcut is never longer than the two edges it replaces, that
+// length is never above the node's distance in the graph (the A* argument with a consistent
+// heuristic). With wall
+// costs, plain A*: a shortcut would skip the costs of the nodes it passes. The heuristic is the
+// larger of the straight-line distance and the landmark bound (FramedQuadtreeLandmarks.h), both
+// consistent along the graph's edges. Segments are checked with LineOfSight (segmentFree with a
+// fast path through open space).
+// Smoothing (PathSmoothing.h): string pulling and bends moved onto obstacle corners, each step
+// only shortening the path. The graph's optimum is never longer than the octile optimum (a run of
+// octile moves inside a free quad is no shorter than the straight segment between its ends), so
+// neither is the returned path.
 // Differs from the thesis: start and goal are joined to their quad's whole frame instead of being
-// moved to cell centres afterwards, and the bends snap to obstacle corners.
+// moved to cell centres afterwards; the search is any-angle with a landmark heuristic; the bends
+// snap to obstacle corners.
 #pragma once
 
 #include <cstddef>
@@ -22,6 +34,8 @@
 #include <Eigen/Core>
 
 #include "core/nav/planning/FramedQuadtree.h"
+#include "core/nav/planning/FramedQuadtreeLandmarks.h"
+#include "core/nav/planning/LineOfSight.h"
 #include "core/raster/OccupancyGrid.h"
 
 namespace rgnav {
@@ -41,8 +55,8 @@ struct CellUnitPath {                   // points in cell units (SegmentVisibili
 
 class FramedQuadtreePlanner {
  public:
-  // Builds the framed quadtree of `grid` (which must outlive the planner) and, with wall costs on,
-  // its distance field. Throws ConfigError for an invalid config.
+  // Builds the framed quadtree of `grid` (which must outlive the planner), its landmark distances
+  // and distance field. Throws ConfigError for an invalid config.
   FramedQuadtreePlanner(const OccupancyGrid& grid, FramedQuadtreePlannerConfig config = {});
   // Any start/goal point inside (or on the border of) a free cell, cell units. Throws
   // StartBlockedError / GoalBlockedError (point not in a free cell) and NoPathError (not
@@ -53,6 +67,7 @@ class FramedQuadtreePlanner {
  private:
   struct NodeState {
     double g = 0.0;
+    double h = 0.0;  // the heuristic to the goal
     std::int32_t parent = -1;
     std::uint32_t seen = 0;    // search stamp: g and parent are valid
     std::uint32_t closed = 0;  // search stamp: expanded
@@ -63,15 +78,23 @@ class FramedQuadtreePlanner {
     std::int32_t node;
   };
 
+  struct FrameRelaxation {  // a quad's frame last relaxed in search `search` from `parent`
+    std::uint32_t search = 0;
+    std::int32_t parent = -1;
+  };
+
   const OccupancyGrid& grid_;
   FramedQuadtreePlannerConfig config_;
   FramedQuadtree tree_;
+  LineOfSight lineOfSight_;
+  FramedQuadtreeLandmarks landmarks_;
   std::vector<Eigen::Vector2d> nodeCentres_;  // per graph node
   std::vector<float> nodeCost_;               // per graph node, extra cost per cell of path (empty: off)
   std::vector<float> cellCost_;               // per cell, the same field for smoothing (empty: off)
   mutable std::mutex mutex_;
   mutable std::vector<NodeState> state_;  // graph nodes, then start and goal
   mutable std::vector<Open> heap_;
+  mutable std::vector<FrameRelaxation> frameRelaxed_;  // per quad
   mutable std::uint32_t search_ = 0;
 };
 

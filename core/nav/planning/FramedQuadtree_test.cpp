@@ -3,7 +3,9 @@
 // quads with contiguous ids per quad; a free power-of-two grid is one quad, a blocked cell splits it.
 #include <cppunit/extensions/HelperMacros.h>
 
+#include <cstdlib>
 #include <random>
+#include <set>
 
 #include "core/nav/planning/FramedQuadtree.h"
 
@@ -33,6 +35,7 @@ class FramedQuadtreeTest : public CppUnit::TestFixture {
   CPPUNIT_TEST_SUITE(FramedQuadtreeTest);
   CPPUNIT_TEST(quadsCoverExactlyTheFreeCells);
   CPPUNIT_TEST(nodesAreTheFramesOfTheQuads);
+  CPPUNIT_TEST(neighboursAreSymmetricAndAdjacent);
   CPPUNIT_TEST(aFreeSquareIsOneFramedQuad);
   CPPUNIT_TEST(aBlockedCellSplitsTheSquare);
   CPPUNIT_TEST_SUITE_END();
@@ -87,6 +90,41 @@ class FramedQuadtreeTest : public CppUnit::TestFixture {
       }
       CPPUNIT_ASSERT_EQUAL(expected, tree.nodeCount());
     }
+  }
+
+  // Cell neighbours are the 8-adjacent frame cells of other quads, diagonal ones unless both cells
+  // beside the step are blocked; frame neighbours the rest of the same frame; each link both ways.
+  void neighboursAreSymmetricAndAdjacent() {
+    std::mt19937 rng(13);
+    const OccupancyGrid grid = randomGrid(rng, 33, 27, 0.3);
+    const FramedQuadtree tree(grid);
+    std::set<std::pair<std::int32_t, std::int32_t>> links;
+    std::size_t diagonals = 0;
+    for (std::int32_t u = 0; u < static_cast<std::int32_t>(tree.nodeCount()); ++u) {
+      const CellIndex cu = tree.nodeCell(u);
+      tree.forEachNeighbour(u, [&](std::int32_t n) { CPPUNIT_ASSERT(links.insert({u, n}).second); });
+      tree.forEachCellNeighbour(u, [&](std::int32_t n) {
+        const CellIndex cn = tree.nodeCell(n);
+        CPPUNIT_ASSERT(tree.nodeQuad(n) != tree.nodeQuad(u));
+        CPPUNIT_ASSERT(std::max(std::abs(cn.col - cu.col), std::abs(cn.row - cu.row)) == 1);
+        if (cn.col != cu.col && cn.row != cu.row) {
+          ++diagonals;
+          CPPUNIT_ASSERT(!grid.blocked({cn.col, cu.row}) || !grid.blocked({cu.col, cn.row}));
+        }
+      });
+      tree.forEachFrameNeighbour(u, [&](std::int32_t n) { CPPUNIT_ASSERT_EQUAL(tree.nodeQuad(u), tree.nodeQuad(n)); });
+    }
+    for (const auto& [u, n] : links) CPPUNIT_ASSERT(links.count({n, u}) == 1);
+    // Every free 8-adjacent pair in different quads is linked unless the diagonal squeezes.
+    for (int r = 0; r < grid.height(); ++r)
+      for (int c = 0; c < grid.width(); ++c)
+        for (const auto& [dc, dr] : {std::pair{1, 0}, std::pair{0, 1}, std::pair{1, 1}, std::pair{1, -1}}) {
+          const std::int32_t u = tree.nodeOf({c, r}), n = tree.nodeOf({c + dc, r + dr});
+          if (u == FramedQuadtree::kNone || n == FramedQuadtree::kNone || tree.nodeQuad(u) == tree.nodeQuad(n)) continue;
+          const bool squeezed = dc != 0 && dr != 0 && grid.blocked({c + dc, r}) && grid.blocked({c, r + dr});
+          CPPUNIT_ASSERT_EQUAL(!squeezed, links.count({u, n}) == 1);
+        }
+    CPPUNIT_ASSERT(diagonals > 100);
   }
 
   void aFreeSquareIsOneFramedQuad() {

@@ -2,6 +2,8 @@
 #include "core/nav/planning/PathSmoothing.h"
 
 #include <algorithm>
+#include <array>
+#include <cstddef>
 #include <cmath>
 
 #include "core/nav/planning/SegmentVisibility.h"
@@ -64,27 +66,49 @@ bool pullString(const OccupancyGrid& grid, const std::vector<float>& cellCost, s
   return changed;
 }
 
-// Moves every bend that is not on a grid vertex to the corner of its cell that shortens the path
-// most while both of its segments stay free. Returns whether a bend moved.
+// Moves every bend that is not on a grid vertex onto the corners of its cell: one corner, or two
+// along one side of the cell (a path through a door one cell wide bends at both jambs), whichever
+// shortens the path most with every segment still free. Returns whether a bend moved.
 bool snapBendsToCorners(const OccupancyGrid& grid, std::vector<Eigen::Vector2d>& points) {
   bool changed = false;
+  std::vector<Eigen::Vector2d> snapped{points.front()};
   for (std::size_t i = 1; i + 1 < points.size(); ++i) {
-    const Eigen::Vector2d& a = points[i - 1];
+    const Eigen::Vector2d& a = snapped.back();
     const Eigen::Vector2d& b = points[i + 1];
     const Eigen::Vector2d p = points[i];
-    if (std::floor(p.x()) == p.x() && std::floor(p.y()) == p.y()) continue;
+    if (std::floor(p.x()) == p.x() && std::floor(p.y()) == p.y()) {
+      snapped.push_back(p);
+      continue;
+    }
+    const double x0 = std::floor(p.x()), y0 = std::floor(p.y());
+    const std::array<Eigen::Vector2d, 4> corners{Eigen::Vector2d(x0, y0), Eigen::Vector2d(x0 + 1, y0),
+                                                 Eigen::Vector2d(x0 + 1, y0 + 1), Eigen::Vector2d(x0, y0 + 1)};
     double best = (p - a).norm() + (b - p).norm() - kShorter;
-    for (const double x : {std::floor(p.x()), std::ceil(p.x())})
-      for (const double y : {std::floor(p.y()), std::ceil(p.y())}) {
-        const Eigen::Vector2d corner(x, y);
-        const double length = (corner - a).norm() + (b - corner).norm();
-        if (length < best && segmentFree(grid, a, corner) && segmentFree(grid, corner, b)) {
-          best = length;
-          points[i] = corner;
-          changed = true;
+    std::array<Eigen::Vector2d, 2> chosen{p, p};
+    std::size_t count = 1;
+    for (std::size_t k = 0; k < 4; ++k) {
+      const Eigen::Vector2d& c = corners[k];
+      const double length = (c - a).norm() + (b - c).norm();
+      if (length < best && segmentFree(grid, a, c) && segmentFree(grid, c, b)) {
+        best = length;
+        chosen = {c, c};
+        count = 1;
+      }
+      for (const std::size_t next : {(k + 1) % 4, (k + 3) % 4}) {
+        const Eigen::Vector2d& d = corners[next];
+        const double twoBends = (c - a).norm() + 1.0 + (b - d).norm();
+        if (twoBends < best && segmentFree(grid, a, c) && segmentFree(grid, c, d) && segmentFree(grid, d, b)) {
+          best = twoBends;
+          chosen = {c, d};
+          count = 2;
         }
       }
+    }
+    changed = changed || chosen[0] != p;
+    snapped.insert(snapped.end(), chosen.begin(), chosen.begin() + static_cast<std::ptrdiff_t>(count));
   }
+  snapped.push_back(points.back());
+  points = std::move(snapped);
   return changed;
 }
 

@@ -1,8 +1,8 @@
 // PathSmoothing: the path optimisation of thesis 5.4 (figure 5.8 left) for polylines in cell
 // units (SegmentVisibility.h). Greedy string pulling drops intermediate points while the shortcut
-// stays segmentFree; then every bend at a cell centre moves to the corner of its cell that shortens
-// the path most with both segments still free (the Euclidean shortest path bends at obstacle
-// corners), and both repeat until nothing changes. With a per-cell cost field (wall costs), a
+// stays segmentFree; then every bend at a cell centre moves onto one corner of its cell, or two
+// along one side, where that shortens the path most with every segment still free (the Euclidean
+// shortest path bends at obstacle corners), and both repeat until nothing changes. With a per-cell cost field (wall costs), a
 // shortcut is taken only if its cost is not higher than the points it drops, and bends stay put.
 // Every change shortens the path (or with costs, cheapens it), never lengthens it; the first and
 // last points never move.

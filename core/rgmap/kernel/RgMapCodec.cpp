@@ -93,6 +93,26 @@ Region region(const json& j) {
   return r;
 }
 
+json revertibleMerge(const RevertibleMerge& m) {
+  json sides = json::array();
+  for (const auto& [g, regions] : m.sides) sides.push_back(json::array({g, regions[kSideA], regions[kSideB]}));
+  return {{"kept", region(m.kept)},       {"absorbed", region(m.absorbed)},
+          {"sides", sides},               {"current", m.current},
+          {"visitStart", m.visitStart},   {"lastScan", m.lastScan}};
+}
+RevertibleMerge revertibleMerge(const json& j) {
+  RevertibleMerge m{region(j.at("kept")),
+                    region(j.at("absorbed")),
+                    {},
+                    static_cast<RegionId>(integerFrom(j.at("current"))),
+                    static_cast<DataId>(integerFrom(j.at("visitStart"))),
+                    static_cast<DataId>(integerFrom(j.at("lastScan")))};
+  for (const json& g : j.at("sides"))
+    m.sides[static_cast<GatewayId>(integerFrom(g.at(0)))] = {static_cast<RegionId>(integerFrom(g.at(1))),
+                                                             static_cast<RegionId>(integerFrom(g.at(2)))};
+  return m;
+}
+
 json laser(const LaserScan& l) {
   return {{"id", l.id},
           {"stamp", jsonNumber(l.stamp)},
@@ -202,7 +222,8 @@ std::string serializeRgMap(const RgMapState& s) {
                      return json{{"id", sc.first}, {"corrected", jsonPose(sc.second.corrected)}};
                    })},
                   {"events", list(s.events, [](const RgMapEvent& e) { return event(e); })},
-                  {"costs", costs(s)}};
+                  {"costs", costs(s)},
+                  {"revertibleMerges", list(s.revertibleMerges, [](const RevertibleMerge& m) { return revertibleMerge(m); })}};
   return j.dump();
 }
 
@@ -244,6 +265,9 @@ RgMapState deserializeRgMap(const std::string& text, const std::string& journal)
         [](const StoredScan& sc) { return sc.scan.id; }, "scan");
     for (const json& e : j.at("events")) s.events.push_back(event(e));
     costs(j.at("costs"), s);
+    // "revertibleMerges" came with undoing merges; a checkpoint written before has none.
+    if (j.contains("revertibleMerges"))
+      for (const json& m : j.at("revertibleMerges")) s.revertibleMerges.push_back(revertibleMerge(m));
   } catch (const json::exception& e) {
     damaged(e.what());
   }

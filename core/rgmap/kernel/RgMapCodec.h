@@ -1,6 +1,7 @@
 // The RG Mapping Kernel's checkpoint: its whole state (RgMapState.h) as two texts.
 //   - The map, versioned JSON ({"format": "rgnav-rg-map", "version": 4, ...}): regions, gateways,
-//     events, learned costs, and every stored scan by ID with its corrected pose only.
+//     events, learned costs, the merges on request that can still be undone (RevertibleMerges.h;
+//     so an undo survives a restart), and every stored scan by ID with its corrected pose only.
 //   - The scan journal: one JSON line per stored scan with its laser data, in ID order. A scan's
 //     laser data never change once it is stored, so a checkpoint appends the new scans' lines and
 //     rewrites only the map. Scans are the bulk of the state (2 to 4 kB per 361-beam scan): one

@@ -3,7 +3,8 @@
 // stopped (and the same descriptions); laser ranges of every kind survive the trip; the scan
 // journal may hold more than the map (a crash between append and map) and a part of a line, but
 // not less; damaged or inconsistent checkpoints are format errors; deliberately broken states are
-// reported by checkConsistency, one message per violation.
+// reported by checkConsistency, one message per violation; merges on request stay revertible
+// across a checkpoint.
 #include "core/rgmap/kernel/RgMapCodec.h"
 
 #include <cppunit/extensions/HelperMacros.h>
@@ -53,6 +54,7 @@ class RgMapCodecTest : public CppUnit::TestFixture {
   CPPUNIT_TEST(rangesOfEveryKindSurvive);
   CPPUNIT_TEST(doorAliasesSurvive);
   CPPUNIT_TEST(poseRevisionSurvives);
+  CPPUNIT_TEST(revertibleMergesSurvive);
   CPPUNIT_TEST(journalMayHoldMoreButNotLess);
   CPPUNIT_TEST(damagedCheckpointsAreFormatErrors);
   CPPUNIT_TEST(brokenStatesAreReported);
@@ -66,6 +68,26 @@ class RgMapCodecTest : public CppUnit::TestFixture {
     for (const auto& [id, scan] : kernel.state().scans) poses.push_back({id, scan.corrected});
     kernel.revisePoses(poses, 12);
     CPPUNIT_ASSERT_EQUAL(std::uint64_t{12}, roundTrip(kernel.state()).lastPoseRevision);
+  }
+
+  // A merge on request made before a restart is undone after it, to the same map; a checkpoint
+  // written before merges could be undone reads with none.
+  void revertibleMergesSurvive() {
+    const std::vector<KernelInput> inputs = rgnav::testing::twoRoomTour().inputs();
+    RgMappingKernel kernel = mapped(inputs, inputs.size());
+    const std::string older = replaced(serializeRgMap(kernel.state()), "\"revertibleMerges\":[],", "");
+    CPPUNIT_ASSERT(deserializeRgMap(older, scanJournalLines(kernel.state())).revertibleMerges.empty());
+    kernel.nameRegion(RegionId{3}, "lab");
+    kernel.mergeRegions(RegionId{2}, RegionId{3}, true);
+
+    const RgMapState saved = roundTrip(kernel.state());
+    CPPUNIT_ASSERT_EQUAL(std::size_t(1), saved.revertibleMerges.size());
+    CPPUNIT_ASSERT(saved.revertibleMerges == kernel.state().revertibleMerges);
+    RgMappingKernel resumed({}, saved);
+    CPPUNIT_ASSERT_EQUAL(RegionId{3}, resumed.unmergeRegions(RegionId{2}));
+    kernel.unmergeRegions(RegionId{2});
+    CPPUNIT_ASSERT_EQUAL(serializeRgMap(kernel.state()), serializeRgMap(resumed.state()));
+    CPPUNIT_ASSERT_EQUAL(RegionId{3}, *resumed.regionByName("lab"));
   }
 
   void resumedKernelEndsIdentically() {

@@ -83,6 +83,23 @@ RegionId mergeRegions(RgMapState& s, RegionId a, RegionId b, DataId scan) {
   return keepId;
 }
 
+RegionId unmergeRegions(RgMapState& s, const RevertibleMerge& m, DataId scan) {
+  Region& kept = s.regions.at(m.kept.id);
+  const std::vector<DataId> since(std::upper_bound(kept.scans.begin(), kept.scans.end(), m.lastScan), kept.scans.end());
+  kept = m.kept;
+  Region absorbed = m.absorbed;
+  std::vector<DataId>& robots = m.current == absorbed.id ? absorbed.scans : kept.scans;
+  robots.insert(robots.end(), since.begin(), since.end());
+  for (const auto& [id, before] : m.sides)
+    for (std::size_t side : {kSideA, kSideB})
+      if (before[side] == absorbed.id) s.gateways.at(id).sides[side].region = absorbed.id;
+  if (s.current == kept.id && m.current == absorbed.id) s.current = absorbed.id;
+  s.regions.emplace(absorbed.id, std::move(absorbed));
+  emitEvent(s, K::RegionsUnmerged, m.kept.id, m.absorbed.id, GatewayId{}, scan);
+  for (const auto& [id, before] : m.sides) updateNeutralised(s, s.gateways.at(id), scan);
+  return m.absorbed.id;
+}
+
 void moveScans(RgMapState& s, RegionId from, RegionId to, DataId first, DataId end) {
   std::vector<DataId>& source = s.regions.at(from).scans;
   const auto lo = std::lower_bound(source.begin(), source.end(), first);

@@ -28,6 +28,14 @@ void attachSide(RgMapState& state, GatewayId g, std::size_t side, RegionId regio
 // merged region.
 RegionId mergeRegions(RgMapState& state, RegionId a, RegionId b, DataId scan);
 
+// Undoes the merge recorded in `merge` (RevertibleMerges.h; whyNotRevertible must have found it
+// safe): the absorbed region is back with its ID, frame, name, scans, object names and the gateway
+// sides that named it, the surviving region is as it was before the merge, and the scans stacked
+// into the merged region since go with the region the robot was in when the merge was made (it
+// is the current region again if it is the absorbed one). Gateways between the two are no longer
+// neutralised. Event RegionsUnmerged. Returns the restored region.
+RegionId unmergeRegions(RgMapState& state, const RevertibleMerge& merge, DataId scan);
+
 // Moves the scans of region `from` with IDs in [first, end) to region `to`.
 void moveScans(RgMapState& state, RegionId from, RegionId to, DataId first, DataId end);
 

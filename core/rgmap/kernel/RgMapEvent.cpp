@@ -9,12 +9,13 @@ namespace {
 
 using K = RgMapEventKind;
 
-constexpr std::array<std::pair<K, std::string_view>, 17> kNames = {{
+constexpr std::array<std::pair<K, std::string_view>, 18> kNames = {{
     {K::RegionCreated, "RegionCreated"},
     {K::RegionEntered, "RegionEntered"},
     {K::RegionFinalised, "RegionFinalised"},
     {K::RegionUpdated, "RegionUpdated"},
     {K::RegionsMerged, "RegionsMerged"},
+    {K::RegionsUnmerged, "RegionsUnmerged"},
     {K::RegionRemoved, "RegionRemoved"},
     {K::RegionNamed, "RegionNamed"},
     {K::ObjectNamed, "ObjectNamed"},

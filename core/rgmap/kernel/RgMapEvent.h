@@ -22,6 +22,7 @@ enum class RgMapEventKind : std::uint8_t {
   RegionFinalised,     // region: left for the first time; its description is final
   RegionUpdated,       // region: left again after a revisit; its description was updated
   RegionsMerged,       // region: the merged region (the lower ID), other: the region merged into it
+  RegionsUnmerged,     // region: a merged region back as before a merge on request, other: the region restored
   RegionRemoved,       // region: a region left without a single scan in it
   RegionNamed,         // region
   ObjectNamed,         // region: the region of the named object

@@ -96,6 +96,21 @@ struct StoredScan {
   friend bool operator==(const StoredScan&, const StoredScan&) = default;
 };
 
+// A merge on request that can still be undone (RgMappingKernel::unmergeRegions, RevertibleMerges.h):
+// the two regions as they were before it, the regions on the sides of their gateways then, and
+// where the robot was. Region IDs are never given again, so the absorbed region's ID stays free.
+struct RevertibleMerge {
+  Region kept;      // the region that survived the merge (the lower ID), before it
+  Region absorbed;  // the region merged into it, before it
+  // The regions on side A and side B of every gateway of either region, before the merge.
+  std::map<GatewayId, std::array<RegionId, 2>> sides;
+  RegionId current;        // the robot's region when the merge was made ...
+  DataId visitStart = 0;   // ... and the first scan of that visit
+  DataId lastScan = 0;     // the last scan taken in then: scans after it were stacked since
+
+  friend bool operator==(const RevertibleMerge&, const RevertibleMerge&) = default;
+};
+
 struct RgMapState {
   std::map<RegionId, Region> regions;
   std::map<GatewayId, Gateway> gateways;
@@ -111,6 +126,8 @@ struct RgMapState {
   // The learned costs of the RG Graph (EdgeCostTable.h).
   std::map<EdgeKey, TraversalStats> edgeTraversals;
   std::map<GatewayId, double> doorOffsets;
+  // The latest merges on request, oldest first, at most RgMappingKernelConfig::revertibleMerges.
+  std::vector<RevertibleMerge> revertibleMerges;
 };
 
 }  // namespace rgnav

@@ -17,6 +17,7 @@
 #include "core/rgmap/kernel/RgMapConsistency.h"
 #include "core/rgmap/kernel/RgMapEdits.h"
 #include "core/rgmap/kernel/RgMapGraph.h"
+#include "core/rgmap/kernel/RevertibleMerges.h"
 
 namespace rgnav {
 namespace {
@@ -75,6 +76,7 @@ RgMappingKernel::RgMappingKernel(const RgMappingKernelConfig& config, RgMapState
   if (!violations.empty()) throw InvalidArgumentError("inconsistent RG map: " + violations.front());
   costTable(state, config.costs);  // throws for a learned cost the table refuses
   state_ = std::move(state);
+  keepLatestMerges(state_, config_.revertibleMerges);
 }
 
 void RgMappingKernel::ensureCurrentRegion(const Pose2D& frame, DataId scan) {
@@ -359,9 +361,36 @@ RegionId RgMappingKernel::mergeRegions(RegionId a, RegionId b, bool force) {
       throw InvalidArgumentError("cannot merge " + pair + ": no region " + std::to_string(r.value()));
   if (!force && !shareGateway(state_, a, b))
     throw InvalidArgumentError("cannot merge " + pair + ": they share no gateway (force the merge if they are one place)");
+  state_.revertibleMerges.push_back(revertibleMerge(state_, a, b));
+  keepLatestMerges(state_, config_.revertibleMerges);
   const RegionId merged = rgnav::mergeRegions(state_, a, b, state_.lastScanId);
   models_.prune(state_);
   return merged;
+}
+
+RegionId RgMappingKernel::unmergeRegions(RegionId merged) {
+  std::vector<RevertibleMerge>& merges = state_.revertibleMerges;
+  const auto latestWith = [&](auto&& which) {
+    return std::find_if(merges.rbegin(), merges.rend(), [&](const RevertibleMerge& m) { return which(m) == merged; });
+  };
+  const auto latest = latestWith([](const RevertibleMerge& m) { return m.kept.id; });
+  const std::string region = "region " + std::to_string(merged.value());
+  if (latest == merges.rend()) {
+    const auto into = latestWith([](const RevertibleMerge& m) { return m.absorbed.id; });
+    const std::string hint = into == merges.rend() ? ""
+                                                   : " (" + region + " was merged into region " +
+                                                         std::to_string(into->kept.id.value()) + ": undo that merge)";
+    throw InvalidArgumentError("no merge into " + region + " can be undone: none is among the latest " +
+                               std::to_string(config_.revertibleMerges) + " merges on request" + hint);
+  }
+  if (const std::optional<std::string> why = whyNotRevertible(state_, *latest))
+    throw InvalidArgumentError("cannot undo the merge of region " + std::to_string(latest->absorbed.id.value()) +
+                               " into " + region + ": " + *why);
+  const RevertibleMerge undone = std::move(*latest);
+  merges.erase(std::next(latest).base());
+  const RegionId restored = rgnav::unmergeRegions(state_, undone, state_.lastScanId);
+  models_.prune(state_);
+  return restored;
 }
 
 void RgMappingKernel::nameRegion(RegionId region, const std::string& name) {

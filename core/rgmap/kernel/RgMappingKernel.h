@@ -52,7 +52,8 @@
 //     in this visit, is treated as above: the missed traversal is repaired. A traversal the
 //     detector reports late for that passage then changes nothing (without it, a hallway region
 //     swept through rooms past known doors).
-//   - Requests: merge two regions (e.g. "these are the same room", 6.1.1), name regions and objects (semantics),
+//   - Requests: merge two regions (e.g. "these are the same room", 6.1.1) and undo one of the latest
+//     such merges (ours: RevertibleMerges.h), name regions and objects (semantics),
 //     revise corrected poses (SLAM loop closures: descriptions follow, RegionModels.h), learn RG
 //     Graph costs (5.4).
 // Every change is an RgMapEvent; the whole state is RgMapState (serialise it with RgMapCodec.h).
@@ -91,6 +92,7 @@ struct RgMappingKernelConfig {
   double sameDoorM = 0.5;  // a new detector ID whose door lies within this of a known door's is that door
   std::size_t minAreaSequences = 2;  // a hallway area seen in fewer observation sequences joins no regions
   DoorSeparationConfig separation;   // a traversed door that does not separate joins its regions
+  std::size_t revertibleMerges = 8;  // the latest merges on request that can be undone (unmergeRegions)
   RegionModelConfig models;
   EdgeCostConfig costs;
 };
@@ -101,6 +103,7 @@ void describe(V& v, RgMappingKernelConfig& c) {
   v.field("same_door_m", c.sameDoorM);
   v.field("min_area_sequences", c.minAreaSequences);
   v.section("separation", c.separation);
+  v.field("revertible_merges", c.revertibleMerges);
   v.section("models", c.models);
   v.section("costs", c.costs);
 }
@@ -144,9 +147,15 @@ class RgMappingKernel {
 
   // Merges two regions on request; returns the merged region (the lower ID). Throws
   // InvalidArgumentError (and changes nothing) for an unknown region, a == b, or two regions that
-  // share no gateway unless `force`: a merge is not undone, and rooms with no gateway between
-  // them (offices on opposite sides of a hallway) are rarely one room.
+  // share no gateway unless `force`: rooms with no gateway between them (offices on opposite
+  // sides of a hallway) are rarely one room. The latest config.revertibleMerges merges on request
+  // can be undone (the kernel's own loop closings cannot).
   RegionId mergeRegions(RegionId a, RegionId b, bool force);
+  // Undoes the latest merge on request that made region `merged` (RevertibleMerges.h says what
+  // comes back, where scans taken since go and when it is safe); returns the restored region.
+  // Throws InvalidArgumentError (and changes nothing) if no such merge is among the latest
+  // config.revertibleMerges, or the map changed since so that the undo is not safe, saying how.
+  RegionId unmergeRegions(RegionId merged);
 
   // Names a region (an empty name removes the name). Throws InvalidArgumentError for an unknown
   // region or a name another region has.

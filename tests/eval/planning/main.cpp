@@ -2,8 +2,11 @@
 // the framed-quadtree planner (robot a point, no inflation, wall costs off) plans between the cell
 // centres; every path is checked (starts and ends at the problem's cell centres, every segment
 // segmentFree) and compared with the .scen's octile optimum; the 8-connected grid A* baseline
-// solves the same problem in the same run for the speed comparison. A line per map, then the
-// summary line `planning: ...` (see issue 26).
+// solves the same problem in the same run for the speed comparison, and the exact Euclidean
+// shortest path (VisibilityGraph) is the limit the path's length is measured against. A line per
+// map, then the summary line `planning: ...` (see issue 26). tree_build_ms is the planner's
+// construction once per map: the framed quadtree, the line-of-sight distance field and the
+// landmark distances; planner_ms and grid_astar_ms sum the plan() calls only.
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -16,6 +19,7 @@
 #include "core/nav/planning/FramedQuadtreePlanner.h"
 #include "core/nav/planning/GridAStar.h"
 #include "core/nav/planning/SegmentVisibility.h"
+#include "core/nav/planning/VisibilityGraph.h"
 #include "tests/eval/planning/MovingAiMap.h"
 #include "tools/common/CommandLine.h"
 
@@ -36,6 +40,9 @@ struct Figures {
   std::size_t invalid = 0;
   std::size_t gridAStarMismatches = 0;  // grid A* lengths that differ from the .scen optimum
   double ratioToOctileMax = 0.0;
+  double ratioToEuclidSum = 0.0;
+  std::size_t ratiosToEuclid = 0;
+  double ratioToEuclidMax = 0.0;
   double plannerSeconds = 0.0;
   double gridAStarSeconds = 0.0;
   std::size_t plannerExpansions = 0;
@@ -47,11 +54,15 @@ struct Figures {
     invalid += o.invalid;
     gridAStarMismatches += o.gridAStarMismatches;
     ratioToOctileMax = std::max(ratioToOctileMax, o.ratioToOctileMax);
+    ratioToEuclidSum += o.ratioToEuclidSum;
+    ratiosToEuclid += o.ratiosToEuclid;
+    ratioToEuclidMax = std::max(ratioToEuclidMax, o.ratioToEuclidMax);
     plannerSeconds += o.plannerSeconds;
     gridAStarSeconds += o.gridAStarSeconds;
     plannerExpansions += o.plannerExpansions;
     gridAStarExpansions += o.gridAStarExpansions;
   }
+  double ratioToEuclidMean() const { return ratiosToEuclid ? ratioToEuclidSum / double(ratiosToEuclid) : 0.0; }
   double speedup() const { return plannerSeconds > 0.0 ? gridAStarSeconds / plannerSeconds : 0.0; }
 };
 
@@ -81,7 +92,8 @@ bool validPath(const rgnav::OccupancyGrid& grid, const rgnav::CellUnitPath& path
 }
 
 Figures scoreProblems(const rgnav::OccupancyGrid& grid, const rgnav::FramedQuadtreePlanner& planner,
-                      const std::vector<rgnav::MovingAiProblem>& problems, const std::string& name) {
+                      const rgnav::VisibilityGraph& euclid, const std::vector<rgnav::MovingAiProblem>& problems,
+                      const std::string& name) {
   const rgnav::GridAStar gridAStar(grid);
   Figures f;
   for (const rgnav::MovingAiProblem& p : problems) {
@@ -99,6 +111,12 @@ Figures scoreProblems(const rgnav::OccupancyGrid& grid, const rgnav::FramedQuadt
                   << p.goal.row << std::endl;
       }
       if (p.octileOptimum > 0.0) f.ratioToOctileMax = std::max(f.ratioToOctileMax, path.length / p.octileOptimum);
+      const double optimum = euclid.shortestPath(start, goal).length;
+      if (optimum > 0.0) {
+        f.ratioToEuclidSum += path.length / optimum;
+        ++f.ratiosToEuclid;
+        f.ratioToEuclidMax = std::max(f.ratioToEuclidMax, path.length / optimum);
+      }
     } catch (const rgnav::Error& e) {
       std::cerr << name << ": " << e.what() << std::endl;
     }
@@ -112,8 +130,8 @@ Figures scoreProblems(const rgnav::OccupancyGrid& grid, const rgnav::FramedQuadt
 }
 
 void printFigures(const Figures& f) {
-  std::printf(" problems=%zu solved=%zu invalid=%zu ratio_to_octile_max=%.6f", f.problems, f.solved, f.invalid,
-              f.ratioToOctileMax);
+  std::printf(" problems=%zu solved=%zu invalid=%zu ratio_to_octile_max=%.6f ratio_to_euclid_mean=%.5f", f.problems,
+              f.solved, f.invalid, f.ratioToOctileMax, f.ratioToEuclidMean());
 }
 
 }  // namespace
@@ -141,14 +159,15 @@ int main(int argc, char** argv) {
       const Clock::time_point t0 = Clock::now();
       const rgnav::FramedQuadtreePlanner planner(grid);
       const double buildSeconds = secondsSince(t0);
-      const Figures f = scoreProblems(grid, planner, problems, name);
+      const rgnav::VisibilityGraph euclid(grid);
+      const Figures f = scoreProblems(grid, planner, euclid, problems, name);
       const rgnav::FramedQuadtree& tree = planner.tree();
       const double nodesRatio = double(tree.nodeCount()) / double(tree.freeCellCount());
       std::printf("map=%s", name.c_str());
       printFigures(f);
-      std::printf(" quads=%zu nodes=%zu free_cells=%zu nodes_ratio=%.4f tree_build_ms=%.1f planner_ms=%.1f"
+      std::printf(" ratio_to_euclid_max=%.5f quads=%zu nodes=%zu free_cells=%zu nodes_ratio=%.4f tree_build_ms=%.1f planner_ms=%.1f"
                   " grid_astar_ms=%.1f speedup_vs_grid_astar=%.2f expansions_ratio=%.3f grid_astar_mismatches=%zu\n",
-                  tree.quads().size(), tree.nodeCount(), tree.freeCellCount(), nodesRatio, 1e3 * buildSeconds,
+                  f.ratioToEuclidMax, tree.quads().size(), tree.nodeCount(), tree.freeCellCount(), nodesRatio, 1e3 * buildSeconds,
                   1e3 * f.plannerSeconds, 1e3 * f.gridAStarSeconds, f.speedup(),
                   f.gridAStarExpansions ? double(f.plannerExpansions) / double(f.gridAStarExpansions) : 0.0,
                   f.gridAStarMismatches);
