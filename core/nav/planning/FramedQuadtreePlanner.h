@@ -29,6 +29,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <mutex>
+#include <optional>
 #include <vector>
 
 #include <Eigen/Core>
@@ -64,7 +65,31 @@ class FramedQuadtreePlanner {
   CellUnitPath plan(const Eigen::Vector2d& start, const Eigen::Vector2d& goal) const;
   const FramedQuadtree& tree() const { return tree_; }
 
+  // Costs from every graph node to one point, for many paths to the same place (the route
+  // planner's paths to a crossing point): Dijkstra over the graph with the search's edge costs
+  // (wall costs included), the point joined to its quad's frame (FramedQuadtreeField.cpp).
+  // Without wall costs these are graph distances, not Lazy Theta*'s shorter any-angle ones.
+  struct Field {
+    Eigen::Vector2d target = Eigen::Vector2d::Zero();
+    std::int32_t targetQuad = -1;
+    std::vector<double> cost;          // per graph node; infinity where the target is not reachable
+    std::vector<std::int32_t> next;    // per graph node: the next node towards the target; -1: the target
+  };
+  // Throws GoalBlockedError for a target not in a free cell.
+  Field fieldTo(const Eigen::Vector2d& target) const;
+  // The cost of the cheapest path from `point` to the field's target (cell units, wall costs
+  // included); none for a point in no free cell or not connected to the target.
+  std::optional<double> costTo(const Field& field, const Eigen::Vector2d& point) const;
+  // That path, smoothed as plan() smooths: `point` first, the target last. Throws NoPathError where
+  // costTo has none.
+  CellUnitPath pathTo(const Field& field, const Eigen::Vector2d& point) const;
+
  private:
+  // The cost from `point` to a field's target and the first node of that path (its quad's frame
+  // node with the least cost through it; -1 when it goes straight to the target in the same quad);
+  // infinite cost where there is none.
+  std::pair<double, std::int32_t> fieldEntry(const Field& field, const Eigen::Vector2d& point) const;
+
   struct NodeState {
     double g = 0.0;
     double h = 0.0;  // the heuristic to the goal

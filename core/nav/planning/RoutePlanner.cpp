@@ -11,6 +11,7 @@
 #include "core/common/Errors.h"
 #include "core/lines/ScanPoints.h"
 #include "core/nav/grid/PlanningErrors.h"
+#include "core/nav/planning/CellPoints.h"
 #include "core/nav/planning/RegionGrid.h"
 #include "core/nav/planning/RegionOverlaps.h"
 #include "core/nav/planning/TargetSpacing.h"
@@ -22,12 +23,6 @@ namespace {
 constexpr double kUnreachable = std::numeric_limits<double>::infinity();
 
 using Polyline = std::vector<Eigen::Vector2d>;
-
-double polylineLength(const Polyline& line) {
-  double length = 0.0;
-  for (std::size_t i = 1; i < line.size(); ++i) length += (line[i] - line[i - 1]).norm();
-  return length;
-}
 
 std::string text(const Eigen::Vector2d& p) {
   std::ostringstream out;
@@ -50,12 +45,12 @@ void validate(const RoutePlannerConfig& c) {
   validate(c.region);
 }
 
-// A region's planning grid, its planner and the region paths found between crossing points.
+// A region's planning grid, its planner and the planner's fields to the route nodes in it.
 struct RoutePlanner::RegionEntry {
   const RegionView* view = nullptr;
   RegionGrid grid;
   std::unique_ptr<FramedQuadtreePlanner> planner;
-  std::map<std::pair<std::size_t, std::size_t>, std::optional<Polyline>> between;  // graph node pairs
+  std::map<std::size_t, std::optional<FramedQuadtreePlanner::Field>> fields;  // by route node
 
   Eigen::Vector2d toRegion(const Eigen::Vector2d& mapPoint) const {
     return transformPoint(inverse(view->summary.frame), mapPoint);
@@ -69,19 +64,15 @@ struct RoutePlanner::RegionEntry {
     if (!p) return std::nullopt;
     return toMap(*p);
   }
-  // The region path between two free points (map frame), or none.
-  std::optional<Polyline> path(const Eigen::Vector2d& from, const Eigen::Vector2d& to) const {
-    try {
-      const CellUnitPath cells = planner->plan(grid.toCells(toRegion(from)), grid.toCells(toRegion(to)));
-      Polyline out;
-      out.reserve(cells.points.size());
-      for (const Eigen::Vector2d& c : cells.points) out.push_back(toMap(grid.toRegion(c)));
-      out.front() = from;
-      out.back() = to;
-      return out;
-    } catch (const Error&) {  // blocked ends or no connection
-      return std::nullopt;
-    }
+  Eigen::Vector2d cells(const Eigen::Vector2d& mapPoint) const { return grid.toCells(toRegion(mapPoint)); }
+  // A planner's path in the map frame, its ends exactly `from` and `to`.
+  Polyline inMap(const CellUnitPath& path, const Eigen::Vector2d& from, const Eigen::Vector2d& to) const {
+    Polyline out;
+    out.reserve(path.points.size());
+    for (const Eigen::Vector2d& c : path.points) out.push_back(toMap(grid.toRegion(c)));
+    out.front() = from;
+    out.back() = to;
+    return out;
   }
 };
 
@@ -259,33 +250,62 @@ Plan RoutePlanner::plan(const Pose2D& startPose, const PlanGoal& goal) const {
   for (const GraphEdgeView& e : map_.graph.edges)
     if (!e.throughGateway()) learned[std::minmax(e.from, e.to)] = e.costM;
 
-  // The region path of a link, cached per region for pairs of graph and transfer nodes. A crossing
-  // point in a blocked cell (inflation at a narrow door) is moved to the nearest free cell.
-  std::map<std::pair<std::size_t, std::size_t>, std::optional<Polyline>> endLinks;
-  const auto regionPath = [&](RegionId region, std::size_t a, std::size_t b) -> const std::optional<Polyline>& {
+  // Links through a region. A node's point is placed on a free cell (a crossing point in a blocked
+  // cell, at a narrow door, moves to the nearest free one); a link to a node costs what the
+  // planner's field to that node says (one field per node and map revision, built on first use),
+  // a link from the start to the goal in one region is planned directly.
+  const auto placed = [&](RegionEntry& r, std::size_t i) -> std::optional<Eigen::Vector2d> {
+    return nodes[i].onGateway ? r.nearestFree(nodes[i].position, config_.crossingSnapM) : std::optional(nodes[i].position);
+  };
+  const auto fieldOf = [&](RegionEntry& r, std::size_t node) -> const std::optional<FramedQuadtreePlanner::Field>& {
+    if (const auto it = r.fields.find(node); it != r.fields.end()) return it->second;
+    std::optional<FramedQuadtreePlanner::Field> field;
+    if (const auto at = placed(r, node)) field = r.planner->fieldTo(r.cells(*at));
+    return r.fields.emplace(node, std::move(field)).first->second;
+  };
+  // The node a link's field leads to, and the link's other end (the goal's links use the field of
+  // the node they leave: costs are symmetric).
+  const auto fieldEnds = [&](std::size_t a, std::size_t b) { return b == g ? std::pair{a, b} : std::pair{b, a}; };
+  std::map<RegionId, std::optional<CellUnitPath>> direct;  // start to goal, by region
+  const auto directPath = [&](RegionId region) -> const std::optional<CellUnitPath>& {
+    if (const auto it = direct.find(region); it != direct.end()) return it->second;
     RegionEntry& r = entry(region);
-    const bool cached = a < s && b < s;
-    if (cached)
-      if (const auto it = r.between.find({a, b}); it != r.between.end()) return it->second;
-    const auto placed = [&](std::size_t i) -> std::optional<Eigen::Vector2d> {
-      return nodes[i].onGateway ? r.nearestFree(nodes[i].position, config_.crossingSnapM) : std::optional(nodes[i].position);
-    };
-    std::optional<Polyline> found;
-    const auto from = placed(a), to = placed(b);
-    if (from && to) found = r.path(*from, *to);
-    if (found) {
-      if (nodes[a].onGateway) found->insert(found->begin(), nodes[a].position);
-      if (nodes[b].onGateway) found->push_back(nodes[b].position);
+    std::optional<CellUnitPath> path;
+    try {
+      path = r.planner->plan(r.cells(start.point), r.cells(end.point));
+    } catch (const Error&) {  // an end blocked in this region, or no connection
     }
-    if (cached) return r.between.emplace(std::pair{a, b}, std::move(found)).first->second;
-    return endLinks.insert_or_assign({a, b}, std::move(found)).first->second;
+    return direct.emplace(region, std::move(path)).first->second;
+  };
+  const auto linkCost = [&](RegionId region, std::size_t a, std::size_t b) {
+    RegionEntry& r = entry(region);
+    if (a == s && b == g) {
+      const auto& path = directPath(region);
+      return path ? path->length * r.grid.grid.resolution() : kUnreachable;
+    }
+    const auto [target, from] = fieldEnds(a, b);
+    const auto& field = fieldOf(r, target);
+    const auto point = placed(r, from);
+    if (!field || !point) return kUnreachable;
+    return r.planner->costTo(*field, r.cells(*point)).value_or(kUnreachable) * r.grid.grid.resolution();
+  };
+  const auto linkPath = [&](RegionId region, std::size_t a, std::size_t b) {
+    RegionEntry& r = entry(region);
+    if (a == s && b == g) return r.inMap(*directPath(region), start.point, end.point);
+    const auto [target, from] = fieldEnds(a, b);
+    const Eigen::Vector2d fromAt = *placed(r, from), targetAt = *placed(r, target);
+    Polyline path = r.inMap(r.planner->pathTo(*fieldOf(r, target), r.cells(fromAt)), fromAt, targetAt);
+    if (nodes[from].onGateway) path.insert(path.begin(), nodes[from].position);
+    if (nodes[target].onGateway) path.push_back(nodes[target].position);
+    if (target != b) std::reverse(path.begin(), path.end());
+    return path;
   };
 
   // Lazy A* (Cohen, Phillips, Likhachev, "Planning Single-Arm Manipulations with n-Arm Robots",
   // SoCS 2014: lazy weighted A*, here unweighted): a link through a region enters the open list
-  // with its lower bound (its learned cost or straight-line length) and its region path is planned
-  // only when that entry comes first, so that region paths are planned for the few links near the
-  // best route, not for every link relaxed.
+  // with its lower bound (its learned cost or straight-line length) and its cost is looked up
+  // only when that entry comes first, so that fields are built for the nodes near the best route,
+  // not for every node relaxed.
   struct Entry {
     double f = 0.0, g = 0.0;
     std::size_t node = 0, from = 0;
@@ -325,8 +345,7 @@ Plan RoutePlanner::plan(const Pose2D& startPose, const PlanGoal& goal) const {
     open.pop();
     if (closed[e.node]) continue;
     if (!e.verified) {
-      const auto& path = regionPath(e.region, e.from, e.node);
-      if (path) push(e.from, e.node, best[e.from] + std::max(e.g - best[e.from], polylineLength(*path)), e.region, true);
+      push(e.from, e.node, best[e.from] + std::max(e.g - best[e.from], linkCost(e.region, e.from, e.node)), e.region, true);
       continue;
     }
     closed[e.node] = true;
@@ -372,7 +391,7 @@ Plan RoutePlanner::plan(const Pose2D& startPose, const PlanGoal& goal) const {
     const Via& step = *via[b];
     const RegionId region = step.region.isNone() ? nodes[b].region : step.region;
     if (regions.empty() || regions.back() != region) regions.push_back(region);
-    const Polyline leg = step.region.isNone() ? Polyline{nodes[a].position, nodes[b].position} : *regionPath(region, a, b);
+    const Polyline leg = step.region.isNone() ? Polyline{nodes[a].position, nodes[b].position} : linkPath(region, a, b);
     for (std::size_t i = 1; i < leg.size(); ++i) {
       points.push_back(leg[i]);
       pointRegion.push_back(regions.size() - 1);

@@ -14,7 +14,9 @@
 //     regions) joins the regions in whose free cells its crossing points lie.
 //   - Region paths: the framed-quadtree planner (FramedQuadtreePlanner.h) in each region between
 //     its entry and exit points; a gateway is crossed on the straight line between its two
-//     crossing points. Ours: the joined path is then string-pulled across the legs (a crossing
+//     crossing points. Ours: each route node (crossing point, passage end) gets the planner's
+//     field to it once per map revision, so a query costs its links by lookups and reads only
+//     the chosen paths off the fields; only start and goal in one region are planned directly. Ours: the joined path is then string-pulled across the legs (a crossing
 //     point is dropped where the shortcut stays free in the grids of the regions it passes), so
 //     that the path does not kink at every crossing point.
 // Goals: a point of the map frame, a region (by ID or name: its free point nearest the freespace
