@@ -9,6 +9,23 @@
 
 namespace rgnav {
 
+namespace {
+
+double cross(const Eigen::Vector2d& a, const Eigen::Vector2d& b) { return a.x() * b.y() - a.y() * b.x(); }
+
+// Whether segments pq and ab share a point.
+bool segmentsMeet(const Eigen::Vector2d& p, const Eigen::Vector2d& q, const Eigen::Vector2d& a, const Eigen::Vector2d& b) {
+  const double d1 = cross(q - p, a - p), d2 = cross(q - p, b - p), d3 = cross(b - a, p - a), d4 = cross(b - a, q - a);
+  if (((d1 > 0 && d2 < 0) || (d1 < 0 && d2 > 0)) && ((d3 > 0 && d4 < 0) || (d3 < 0 && d4 > 0))) return true;
+  const auto onSegment = [](const Eigen::Vector2d& s, const Eigen::Vector2d& t, const Eigen::Vector2d& x, double side) {
+    return side == 0.0 && x.x() >= std::min(s.x(), t.x()) && x.x() <= std::max(s.x(), t.x()) &&
+           x.y() >= std::min(s.y(), t.y()) && x.y() <= std::max(s.y(), t.y());
+  };
+  return onSegment(p, q, a, d1) || onSegment(p, q, b, d2) || onSegment(a, b, p, d3) || onSegment(a, b, q, d4);
+}
+
+}  // namespace
+
 Eigen::Vector2d RegionGrid::toCells(const Eigen::Vector2d& p) const {
   return {(p.x() - grid.origin().x) / grid.resolution(), (p.y() - grid.origin().y) / grid.resolution()};
 }
@@ -34,10 +51,11 @@ std::optional<Eigen::Vector2d> RegionGrid::nearestFree(const Eigen::Vector2d& p,
       if (grid.blocked({k, r})) continue;
       const Eigen::Vector2d centre = toRegion({k + 0.5, r + 0.5});
       const double d = (centre - p).norm();
-      if (d <= bestDistance) {
-        bestDistance = d;
-        best = centre;
-      }
+      if (d > bestDistance) continue;
+      if (std::any_of(walls.begin(), walls.end(), [&](const Segment2& w) { return segmentsMeet(p, centre, w.a, w.b); }))
+        continue;
+      bestDistance = d;
+      best = centre;
     }
   return best;
 }
@@ -46,13 +64,13 @@ RegionGrid buildRegionGrid(const RegionView& region, double resolutionM, double 
   if (!(resolutionM > 0.0) || !(robotRadiusM >= 0.0))
     throw InvalidArgumentError("region grid: the resolution must be positive and the radius not negative");
   const FreespaceBitmap& free = region.freespace;
-  if (free.width == 0 || free.height == 0) return {OccupancyGrid(1, 1, resolutionM, {}, Cell::Unknown)};
+  if (free.width == 0 || free.height == 0) return {OccupancyGrid(1, 1, resolutionM, {}, Cell::Unknown), region.lines};
 
   const Eigen::Vector2d lo = free.originM;
   const Eigen::Vector2d hi = lo + Eigen::Vector2d(free.width, free.height) * free.resolutionM;
   const int width = static_cast<int>(std::ceil((hi.x() - lo.x()) / resolutionM));
   const int height = static_cast<int>(std::ceil((hi.y() - lo.y()) / resolutionM));
-  RegionGrid out{OccupancyGrid(width, height, resolutionM, {lo.x(), lo.y()}, Cell::Unknown)};
+  RegionGrid out{OccupancyGrid(width, height, resolutionM, {lo.x(), lo.y()}, Cell::Unknown), region.lines};
 
   // Walls: 0 on a line, 255 elsewhere, so that the distance transform measures to the lines.
   cv::Mat open(height, width, CV_8U, cv::Scalar(255));

@@ -9,6 +9,7 @@
 
 #include <Eigen/Core>
 #include <optional>
+#include <vector>
 
 #include "core/raster/OccupancyGrid.h"
 #include "core/rgmap/kernel/RgMapViews.h"
@@ -16,14 +17,17 @@
 namespace rgnav {
 
 struct RegionGrid {
-  OccupancyGrid grid;  // region frame
+  OccupancyGrid grid;           // region frame
+  std::vector<Segment2> walls;  // the line map the grid was rendered from (region frame)
 
   Eigen::Vector2d toCells(const Eigen::Vector2d& regionPoint) const;
   Eigen::Vector2d toRegion(const Eigen::Vector2d& cellPoint) const;
   // Whether a point (region frame) lies in a free cell.
   bool freeAt(const Eigen::Vector2d& regionPoint) const;
-  // The centre of the free cell nearest to `regionPoint` within `maxDistanceM` (region frame), if
-  // any; the point itself when its cell is free.
+  // The centre of the free cell nearest to `regionPoint` within `maxDistanceM` (region frame) that
+  // the straight hop from the point reaches without crossing a wall line, if any; the point itself
+  // when its cell is free. For points that lie just inside the inflation around walls (a crossing
+  // point at a narrow door, a robot close to a wall): the hop is driven in a straight line.
   std::optional<Eigen::Vector2d> nearestFree(const Eigen::Vector2d& regionPoint, double maxDistanceM) const;
 };
 

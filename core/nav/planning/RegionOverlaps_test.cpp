@@ -16,7 +16,7 @@ namespace {
 // A region grid of w x h metres at 0.05 m, free except a one-cell border, origin at (0, 0) of
 // its region frame.
 RegionGrid freeBox(double w, double h) {
-  RegionGrid g{OccupancyGrid(static_cast<int>(w / 0.05), static_cast<int>(h / 0.05), 0.05, {0.0, 0.0}, Cell::Free)};
+  RegionGrid g{OccupancyGrid(static_cast<int>(w / 0.05), static_cast<int>(h / 0.05), 0.05, {0.0, 0.0}, Cell::Free), {}};
   for (int c = 0; c < g.grid.width(); ++c) {
     g.grid.set({c, 0}, Cell::Occupied);
     g.grid.set({c, g.grid.height() - 1}, Cell::Occupied);

@@ -51,6 +51,7 @@ struct RoutePlanner::RegionEntry {
   RegionGrid grid;
   std::unique_ptr<FramedQuadtreePlanner> planner;
   std::map<std::size_t, std::optional<FramedQuadtreePlanner::Field>> fields;  // by route node
+  std::map<std::size_t, std::optional<Eigen::Vector2d>> placements;          // by route node
 
   Eigen::Vector2d toRegion(const Eigen::Vector2d& mapPoint) const {
     return transformPoint(inverse(view->summary.frame), mapPoint);
@@ -255,7 +256,9 @@ Plan RoutePlanner::plan(const Pose2D& startPose, const PlanGoal& goal) const {
   // planner's field to that node says (one field per node and map revision, built on first use),
   // a link from the start to the goal in one region is planned directly.
   const auto placed = [&](RegionEntry& r, std::size_t i) -> std::optional<Eigen::Vector2d> {
-    return nodes[i].onGateway ? r.nearestFree(nodes[i].position, config_.crossingSnapM) : std::optional(nodes[i].position);
+    if (!nodes[i].onGateway) return nodes[i].position;
+    if (const auto it = r.placements.find(i); it != r.placements.end()) return it->second;
+    return r.placements.emplace(i, r.nearestFree(nodes[i].position, config_.crossingSnapM)).first->second;
   };
   const auto fieldOf = [&](RegionEntry& r, std::size_t node) -> const std::optional<FramedQuadtreePlanner::Field>& {
     if (const auto it = r.fields.find(node); it != r.fields.end()) return it->second;
