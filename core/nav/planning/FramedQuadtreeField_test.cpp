@@ -8,6 +8,7 @@
 #include <random>
 
 #include "core/nav/grid/PlanningErrors.h"
+#include "core/nav/planning/testing/RandomGrids.h"
 #include "core/nav/planning/FramedQuadtreePlanner.h"
 #include "core/nav/planning/SegmentVisibility.h"
 
@@ -16,27 +17,8 @@ using rgnav::Cell;
 using rgnav::CellIndex;
 using rgnav::FramedQuadtreePlanner;
 using rgnav::OccupancyGrid;
-
-namespace {
-
-OccupancyGrid randomGrid(std::mt19937& rng, int size, double blockedShare) {
-  OccupancyGrid grid(size, size, 1.0);
-  std::bernoulli_distribution blocked(blockedShare);
-  for (int r = 0; r < size; ++r)
-    for (int c = 0; c < size; ++c)
-      if (blocked(rng)) grid.set({c, r}, Cell::Occupied);
-  return grid;
-}
-
-Vector2d randomFreePoint(std::mt19937& rng, const OccupancyGrid& grid) {
-  std::uniform_real_distribution<double> at(0.0, grid.width());
-  for (;;) {
-    const Vector2d p(at(rng), at(rng));
-    if (!grid.blocked({int(p.x()), int(p.y())})) return p;
-  }
-}
-
-}  // namespace
+using rgnav::testing::randomGrid;
+using rgnav::testing::randomFreePoint;
 
 class FramedQuadtreeFieldTest : public CppUnit::TestFixture {
   CPPUNIT_TEST_SUITE(FramedQuadtreeFieldTest);

@@ -10,6 +10,7 @@
 #include <random>
 
 #include "core/nav/grid/PlanningErrors.h"
+#include "core/nav/planning/testing/RandomGrids.h"
 #include "core/nav/planning/FramedQuadtreePlanner.h"
 #include "core/nav/planning/GridAStar.h"
 #include "core/nav/planning/SegmentVisibility.h"
@@ -21,25 +22,10 @@ using rgnav::CellUnitPath;
 using rgnav::FramedQuadtreePlanner;
 using rgnav::FramedQuadtreePlannerConfig;
 using rgnav::OccupancyGrid;
+using rgnav::testing::randomGrid;
+using rgnav::testing::randomFreeCell;
 
 namespace {
-
-OccupancyGrid randomGrid(std::mt19937& rng, int width, int height, double blockedShare) {
-  OccupancyGrid grid(width, height, 1.0);
-  std::bernoulli_distribution blocked(blockedShare);
-  for (int r = 0; r < height; ++r)
-    for (int c = 0; c < width; ++c)
-      if (blocked(rng)) grid.set({c, r}, Cell::Occupied);
-  return grid;
-}
-
-CellIndex randomFreeCell(std::mt19937& rng, const OccupancyGrid& grid) {
-  std::uniform_int_distribution<int> col(0, grid.width() - 1), row(0, grid.height() - 1);
-  for (;;) {
-    const CellIndex c{col(rng), row(rng)};
-    if (!grid.blocked(c)) return c;
-  }
-}
 
 void checkPath(const OccupancyGrid& grid, const CellUnitPath& path, const Vector2d& start, const Vector2d& goal) {
   CPPUNIT_ASSERT(path.points.front() == start);

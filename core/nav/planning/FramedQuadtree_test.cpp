@@ -7,23 +7,16 @@
 #include <random>
 #include <set>
 
+#include "core/nav/planning/testing/RandomGrids.h"
 #include "core/nav/planning/FramedQuadtree.h"
 
 using rgnav::Cell;
 using rgnav::CellIndex;
 using rgnav::FramedQuadtree;
 using rgnav::OccupancyGrid;
+using rgnav::testing::randomGrid;
 
 namespace {
-
-OccupancyGrid randomGrid(std::mt19937& rng, int width, int height, double blockedShare) {
-  OccupancyGrid grid(width, height, 1.0);
-  std::bernoulli_distribution blocked(blockedShare);
-  for (int r = 0; r < height; ++r)
-    for (int c = 0; c < width; ++c)
-      if (blocked(rng)) grid.set({c, r}, Cell::Occupied);
-  return grid;
-}
 
 bool onFrame(const FramedQuadtree::Quad& q, CellIndex c) {
   return c.col == q.col || c.row == q.row || c.col == q.col + q.size - 1 || c.row == q.row + q.size - 1;

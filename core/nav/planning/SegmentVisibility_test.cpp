@@ -6,6 +6,7 @@
 #include <cmath>
 #include <random>
 
+#include "core/nav/planning/testing/RandomGrids.h"
 #include "core/nav/planning/SegmentVisibility.h"
 
 using Eigen::Vector2d;
@@ -13,17 +14,9 @@ using rgnav::Cell;
 using rgnav::CellIndex;
 using rgnav::OccupancyGrid;
 using rgnav::segmentFree;
+using rgnav::testing::randomGrid;
 
 namespace {
-
-OccupancyGrid randomGrid(std::mt19937& rng, int size, double blockedShare) {
-  OccupancyGrid grid(size, size, 1.0);
-  std::bernoulli_distribution blocked(blockedShare);
-  for (int r = 0; r < size; ++r)
-    for (int c = 0; c < size; ++c)
-      if (blocked(rng)) grid.set({c, r}, Cell::Occupied);
-  return grid;
-}
 
 Vector2d centre(int c, int r) { return {c + 0.5, r + 0.5}; }
 

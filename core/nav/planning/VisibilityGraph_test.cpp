@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "core/nav/grid/PlanningErrors.h"
+#include "core/nav/planning/testing/RandomGrids.h"
 #include "core/nav/planning/SegmentVisibility.h"
 #include "core/nav/planning/VisibilityGraph.h"
 
@@ -18,19 +19,11 @@ using rgnav::Cell;
 using rgnav::OccupancyGrid;
 using rgnav::segmentFree;
 using rgnav::VisibilityGraph;
+using rgnav::testing::randomGrid;
 
 namespace {
 
 constexpr double kInf = std::numeric_limits<double>::infinity();
-
-OccupancyGrid randomGrid(std::mt19937& rng, int size, double blockedShare) {
-  OccupancyGrid grid(size, size, 1.0);
-  std::bernoulli_distribution blocked(blockedShare);
-  for (int r = 0; r < size; ++r)
-    for (int c = 0; c < size; ++c)
-      if (blocked(rng)) grid.set({c, r}, Cell::Occupied);
-  return grid;
-}
 
 // Dense Dijkstra over the grid vertices a path may bend at (all but diagonal squeezes) and the
 // two points; infinity when they are not connected.
