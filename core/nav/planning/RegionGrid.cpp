@@ -39,7 +39,8 @@ bool RegionGrid::freeAt(const Eigen::Vector2d& p) const {
   return cell && !grid.blocked(*cell);
 }
 
-std::optional<Eigen::Vector2d> RegionGrid::nearestFree(const Eigen::Vector2d& p, double maxDistanceM) const {
+std::optional<Eigen::Vector2d> RegionGrid::nearestFree(const Eigen::Vector2d& p, double maxDistanceM,
+                                                       bool overWalls) const {
   if (freeAt(p)) return p;
   const Eigen::Vector2d c = toCells(p);
   const int reach = static_cast<int>(std::ceil(maxDistanceM / grid.resolution()));
@@ -52,7 +53,8 @@ std::optional<Eigen::Vector2d> RegionGrid::nearestFree(const Eigen::Vector2d& p,
       const Eigen::Vector2d centre = toRegion({k + 0.5, r + 0.5});
       const double d = (centre - p).norm();
       if (d > bestDistance) continue;
-      if (std::any_of(walls.begin(), walls.end(), [&](const Segment2& w) { return segmentsMeet(p, centre, w.a, w.b); }))
+      if (!overWalls &&
+          std::any_of(walls.begin(), walls.end(), [&](const Segment2& w) { return segmentsMeet(p, centre, w.a, w.b); }))
         continue;
       bestDistance = d;
       best = centre;

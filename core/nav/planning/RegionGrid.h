@@ -28,7 +28,10 @@ struct RegionGrid {
   // the straight hop from the point reaches without crossing a wall line, if any; the point itself
   // when its cell is free. For points that lie just inside the inflation around walls (a crossing
   // point at a narrow door, a robot close to a wall): the hop is driven in a straight line.
-  std::optional<Eigen::Vector2d> nearestFree(const Eigen::Vector2d& regionPoint, double maxDistanceM) const;
+  // `overWalls`: the hop may cross wall lines (a crossing point the robot drove through, whose
+  // door frame the line map may close a little).
+  std::optional<Eigen::Vector2d> nearestFree(const Eigen::Vector2d& regionPoint, double maxDistanceM,
+                                             bool overWalls = false) const;
 };
 
 // Throws InvalidArgumentError for a non-positive resolution or a negative radius.

@@ -60,8 +60,8 @@ struct RoutePlanner::RegionEntry {
     return transformPoint(view->summary.frame, regionPoint);
   }
   bool freeAt(const Eigen::Vector2d& mapPoint) const { return grid.freeAt(toRegion(mapPoint)); }
-  std::optional<Eigen::Vector2d> nearestFree(const Eigen::Vector2d& mapPoint, double maxM) const {
-    const auto p = grid.nearestFree(toRegion(mapPoint), maxM);
+  std::optional<Eigen::Vector2d> nearestFree(const Eigen::Vector2d& mapPoint, double maxM, bool overWalls = false) const {
+    const auto p = grid.nearestFree(toRegion(mapPoint), maxM, overWalls);
     if (!p) return std::nullopt;
     return toMap(*p);
   }
@@ -172,7 +172,7 @@ RoutePlanner::Ends RoutePlanner::goalOf(const PlanGoal& goal, const Eigen::Vecto
       const RegionId id = goal.kind == PlanGoal::Kind::Region ? goal.region : regionNamed(goal.name);
       const RegionEntry& region = entry(id);
       const double reach = (region.view->boxMax - region.view->boxMin).norm() + 1.0;
-      const auto p = region.nearestFree(region.toMap(region.view->centroid), reach);
+      const auto p = region.nearestFree(region.toMap(region.view->centroid), reach, true);
       if (!p) throw NoPathError("region " + std::to_string(id.value()) + " has no free cell the robot fits in");
       return {*p, *p, {id}, std::nullopt};
     }
@@ -186,7 +186,7 @@ RoutePlanner::Ends RoutePlanner::goalOf(const PlanGoal& goal, const Eigen::Vecto
           // comes from when two are about as near.
           const double reach = 0.5 * std::hypot(object.lengthM, object.widthM) + config_.robotRadiusM + 1.0;
           const Eigen::Vector2d towardStart = centre + (start - centre).normalized() * 1e-3;
-          const auto p = region.nearestFree(towardStart, reach);
+          const auto p = region.nearestFree(towardStart, reach, true);
           if (!p) throw NoPathError("no free pose in front of object \"" + goal.name + "\"");
           const Eigen::Vector2d facing = centre - *p;
           return {*p, *p, {r.summary.id}, std::atan2(facing.y(), facing.x())};
@@ -194,6 +194,36 @@ RoutePlanner::Ends RoutePlanner::goalOf(const PlanGoal& goal, const Eigen::Vecto
       throw NoPathError("no object is named \"" + goal.name + "\"");
   }
   throw InvalidArgumentError("route planner: unknown goal kind");
+}
+
+bool RoutePlanner::passageFree(const PassageEnd& a, const PassageEnd& b,
+                               const std::optional<Eigen::Vector2d>& middle) const {
+  if (a.crossing == b.crossing) return (a.position - b.position).norm() == 0.0;
+  // Every half cell along the line (through the door's middle) lies on a free cell of a region
+  // (the two ends' first: a hallway area's square may lie in a third), except near the ends,
+  // which may lie in the inflation and are placed on free cells, and near a door's middle, where
+  // both regions' freespace ends at the door line.
+  const RegionEntry &ra = entry(a.region), &rb = entry(b.region);
+  const std::vector<Eigen::Vector2d> line = middle ? std::vector{a.position, *middle, b.position}
+                                                   : std::vector{a.position, b.position};
+  for (std::size_t i = 1; i < line.size(); ++i) {
+    const Eigen::Vector2d from = line[i - 1], to = line[i];
+    const int samples = std::max(1, static_cast<int>(std::ceil((to - from).norm() / (0.5 * config_.gridResolutionM))));
+    for (int k = 0; k <= samples; ++k) {
+      const Eigen::Vector2d p = from + (to - from) * (double(k) / samples);
+      if ((p - a.position).norm() < config_.crossingSnapM || (p - b.position).norm() < config_.crossingSnapM) continue;
+      if (middle && (p - *middle).norm() < config_.robotRadiusM) continue;
+      if (!ra.freeAt(p) && !rb.freeAt(p) && regionsAt(p).empty()) return false;
+    }
+  }
+  return true;
+}
+
+std::optional<Eigen::Vector2d> RoutePlanner::doorMiddle(GatewayId id) const {
+  for (const GatewayView& gateway : map_.gateways)
+    if (gateway.id == id && gateway.door && gateway.gatewayPoints.size() == 2)
+      return 0.5 * (gateway.gatewayPoints[0] + gateway.gatewayPoints[1]);
+  return std::nullopt;
 }
 
 const std::vector<RoutePlanner::Passage>& RoutePlanner::passages() const {
@@ -204,16 +234,20 @@ const std::vector<RoutePlanner::Passage>& RoutePlanner::passages() const {
       const RegionView &a = map_.regions[i], &b = map_.regions[k];
       for (const Eigen::Vector2d& p : overlapTransfers(entry(a.summary.id).grid, a.summary.frame, entry(b.summary.id).grid,
                                                        b.summary.frame, config_.overlapSampleM, config_.overlapMinAreaM2))
-        out.push_back({GatewayId{}, {{p, a.summary.id, 0}, {p, b.summary.id, 0}}});
+        out.push_back({GatewayId{}, {{p, a.summary.id, 0}, {p, b.summary.id, 0}}, {{0, 1}}});
     }
   for (const GatewayView& gateway : map_.gateways) {
     if (!gateway.sideA.isNone() && !gateway.sideB.isNone()) continue;  // in the RG graph
-    Passage passage{gateway.id, {}};
+    Passage passage{gateway.id, {}, {}};
     for (std::size_t c = 0; c < gateway.crossingPoints.size(); ++c)
       for (const RegionView& r : map_.regions)
-        if (entry(r.summary.id).nearestFree(gateway.crossingPoints[c], config_.crossingSnapM))
+        if (entry(r.summary.id).nearestFree(gateway.crossingPoints[c], config_.crossingSnapM, true))
           passage.ends.push_back({gateway.crossingPoints[c], r.summary.id, c});
-    if (passage.ends.size() > 1) out.push_back(std::move(passage));
+    const std::optional<Eigen::Vector2d> middle = doorMiddle(gateway.id);
+    for (std::size_t i = 0; i < passage.ends.size(); ++i)
+      for (std::size_t k = i + 1; k < passage.ends.size(); ++k)
+        if (passageFree(passage.ends[i], passage.ends[k], middle)) passage.links.push_back({i, k});
+    if (!passage.links.empty()) out.push_back(std::move(passage));
   }
   return passages_.emplace(std::move(out));
 }
@@ -258,7 +292,7 @@ Plan RoutePlanner::plan(const Pose2D& startPose, const PlanGoal& goal) const {
   const auto placed = [&](RegionEntry& r, std::size_t i) -> std::optional<Eigen::Vector2d> {
     if (!nodes[i].onGateway) return nodes[i].position;
     if (const auto it = r.placements.find(i); it != r.placements.end()) return it->second;
-    return r.placements.emplace(i, r.nearestFree(nodes[i].position, config_.crossingSnapM)).first->second;
+    return r.placements.emplace(i, r.nearestFree(nodes[i].position, config_.crossingSnapM, true)).first->second;
   };
   const auto fieldOf = [&](RegionEntry& r, std::size_t node) -> const std::optional<FramedQuadtreePlanner::Field>& {
     if (const auto it = r.fields.find(node); it != r.fields.end()) return it->second;
@@ -361,8 +395,13 @@ Plan RoutePlanner::plan(const Pose2D& startPose, const PlanGoal& goal) const {
     }
     throughRegion(e.node, nodes[e.node].region, at);
     if (nodes[e.node].passage != kNoPassage) {
-      for (std::size_t v : passageNodes[nodes[e.node].passage])
-        if (v != e.node) push(e.node, v, at + (nodes[v].position - nodes[e.node].position).norm(), RegionId{}, true);
+      const std::size_t k = nodes[e.node].passage;
+      const std::size_t self = e.node - passageNodes[k].front();
+      for (const auto& [i, j] : passages()[k].links)
+        if (i == self || j == self) {
+          const std::size_t v = passageNodes[k][i == self ? j : i];
+          push(e.node, v, at + (nodes[v].position - nodes[e.node].position).norm(), RegionId{}, true);
+        }
     } else {
       for (const GraphEdgeView& edge : map_.graph.edges)
         if (edge.throughGateway() && (edge.from == e.node || edge.to == e.node))
@@ -376,16 +415,22 @@ Plan RoutePlanner::plan(const Pose2D& startPose, const PlanGoal& goal) const {
     throw NoPathError("no route from region " + from + " to region " + to + " in the RG map");
   }
 
-  // The legs in driving order, as one polyline whose points know the region of the leg that
-  // reaches them (a gateway's leg: the region it leads into).
+  // The legs in driving order, each as planned in its region (no shortcut across legs: measured
+  // on the tuning maps, taut shortcuts across regions brought more paths too close to real walls
+  // than the legs' own wall costs do). A door is passed through the middle of its gateway points:
+  // the crossing points lie off the door at either side, not necessarily in line with its middle,
+  // and the straight line between them can graze a jamb.
+  const auto gatewayOf = [&](std::size_t i) {
+    return i < graphNodes ? map_.graph.nodes[i].gateway : (nodes[i].onGateway ? passages()[nodes[i].passage].gateway : GatewayId{});
+  };
   std::vector<std::size_t> order{g};
   while (order.back() != s) order.push_back(via[order.back()]->from);
   std::reverse(order.begin(), order.end());
   Plan out;
   out.mapRevision = map_.revision;
   std::vector<RegionId> regions;  // the regions passed, in driving order
-  std::vector<Eigen::Vector2d> points{start.point};
-  std::vector<std::size_t> pointRegion{0};
+  if (start.given != start.point) out.path.push_back(start.given);
+  out.path.push_back(start.point);
   for (std::size_t k = 1; k < order.size(); ++k) {
     const std::size_t a = order[k - 1], b = order[k];
     if (b < graphNodes) out.route.push_back(map_.graph.nodes[b]);
@@ -394,40 +439,12 @@ Plan RoutePlanner::plan(const Pose2D& startPose, const PlanGoal& goal) const {
     const Via& step = *via[b];
     const RegionId region = step.region.isNone() ? nodes[b].region : step.region;
     if (regions.empty() || regions.back() != region) regions.push_back(region);
-    const Polyline leg = step.region.isNone() ? Polyline{nodes[a].position, nodes[b].position} : linkPath(region, a, b);
-    for (std::size_t i = 1; i < leg.size(); ++i) {
-      points.push_back(leg[i]);
-      pointRegion.push_back(regions.size() - 1);
-    }
+    Polyline leg = step.region.isNone() ? Polyline{nodes[a].position, nodes[b].position} : linkPath(region, a, b);
+    const bool acrossGateway = step.region.isNone() && !gatewayOf(b).isNone() && nodes[a].position != nodes[b].position;
+    if (const auto middle = acrossGateway ? doorMiddle(gatewayOf(b)) : std::nullopt) leg.insert(leg.begin() + 1, *middle);
+    for (std::size_t i = 1; i < leg.size(); ++i)
+      if ((leg[i] - out.path.back()).norm() > 1e-9) out.path.push_back(leg[i]);
   }
-  // The start's point belongs to the first region.
-  pointRegion.front() = 0;
-
-  // String pulling across legs: a point is dropped while the shortcut past it stays free in the
-  // grids of the regions between its ends (checked every half cell: a shortcut may clip a blocked
-  // cell's corner by at most a quarter cell, inside the robot-radius inflation).
-  const auto freeIn = [&](const Eigen::Vector2d& p, std::size_t firstRegion, std::size_t lastRegion) {
-    for (std::size_t k = firstRegion; k <= lastRegion; ++k)
-      if (entry(regions[k]).freeAt(p)) return true;
-    return false;
-  };
-  const auto shortcutFree = [&](std::size_t i, std::size_t j) {
-    const Eigen::Vector2d a = points[i], b = points[j];
-    const int samples = std::max(1, static_cast<int>(std::ceil((b - a).norm() / (0.5 * config_.gridResolutionM))));
-    for (int k = 0; k <= samples; ++k)
-      if (!freeIn(a + (b - a) * (double(k) / samples), pointRegion[i], pointRegion[j])) return false;
-    return true;
-  };
-  std::vector<std::size_t> kept{0};
-  for (std::size_t i = 0; i + 1 < points.size();) {
-    std::size_t j = i + 1;
-    while (j + 1 < points.size() && shortcutFree(i, j + 1)) ++j;
-    kept.push_back(j);
-    i = j;
-  }
-  if (start.given != start.point) out.path.push_back(start.given);
-  for (std::size_t i : kept)
-    if (out.path.empty() || (points[i] - out.path.back()).norm() > 1e-9) out.path.push_back(points[i]);
   out.lengthM = polylineLength(out.path);
   out.startRegion = regions.front();
   out.goalRegion = regions.back();

@@ -3,7 +3,9 @@
 // (thesis 5.5.3: 0.5 to 2 m apart), each with the region it lies in.
 //   - Region grids (RegionGrid.h): a region's line map rendered into a grid at `gridResolutionM`
 //     within its freespace, walls inflated by the robot radius, built once per region and map
-//     revision.
+//     revision. A start or crossing point just off the free cells moves onto the nearest one (a
+//     start not across a wall line; a crossing point, which the robot drove through, may: the
+//     line map may close a door's frame a little).
 //   - Route: A* over the RG graph's crossing points. Deliberate differences from the thesis (whose
 //     region edges cost their learned cost, initially the Euclidean length): a region edge costs
 //     at least the length of the region path between its crossing points, and the start and goal
@@ -14,11 +16,10 @@
 //     regions) joins the regions in whose free cells its crossing points lie.
 //   - Region paths: the framed-quadtree planner (FramedQuadtreePlanner.h) in each region between
 //     its entry and exit points; a gateway is crossed on the straight line between its two
-//     crossing points. Ours: each route node (crossing point, passage end) gets the planner's
-//     field to it once per map revision, so a query costs its links by lookups and reads only
-//     the chosen paths off the fields; only start and goal in one region are planned directly. Ours: the joined path is then string-pulled across the legs (a crossing
-//     point is dropped where the shortcut stays free in the grids of the regions it passes), so
-//     that the path does not kink at every crossing point.
+//     crossing points, through the middle of a door. Ours: each route node (crossing point,
+//     passage end) gets the planner's field to it once per map revision, so a query costs its
+//     links by lookups and reads only the chosen paths off the fields; only start and goal in one
+//     region are planned directly.
 // Goals: a point of the map frame, a region (by ID or name: its free point nearest the freespace
 // centroid), or a named object (a free pose in front of it, facing it). A start outside every
 // region is placed in the nearest region within `startSnapM`.
@@ -106,10 +107,12 @@ class RoutePlanner {
  private:
   struct RegionEntry;
   struct Ends;
-  // Ways between regions beyond the RG graph's gateway edges, each joining every two of its ends
-  // at their straight-line distance: an overlap of two regions (both ends at one point), or a
+  // Ways between regions beyond the RG graph's gateway edges, each joining some of its ends at
+  // their straight-line distance: an overlap of two regions (both ends at one point), or a
   // gateway the RG graph does not hold yet (a side's region unknown), its crossing points placed
-  // in the regions whose free cells hold them.
+  // in the regions whose free cells hold them and two of them joined where the straight line
+  // between them stays on free cells of the map (a door's: through its middle). Nobody has
+  // driven these, unlike the RG graph's gateway edges, so they are checked.
   struct PassageEnd {
     Eigen::Vector2d position;  // map frame
     RegionId region;
@@ -118,9 +121,14 @@ class RoutePlanner {
   struct Passage {
     GatewayId gateway;  // none: an overlap
     std::vector<PassageEnd> ends;
+    std::vector<std::pair<std::size_t, std::size_t>> links;  // the ends joined, by index
   };
   // Found on first use after a map change.
   const std::vector<Passage>& passages() const;
+  // The middle of a door's gateway points; none for a gateway that is no door.
+  std::optional<Eigen::Vector2d> doorMiddle(GatewayId gateway) const;
+  // Whether two ends of a gateway passage may be joined (see above); `middle`: a door's.
+  bool passageFree(const PassageEnd& a, const PassageEnd& b, const std::optional<Eigen::Vector2d>& middle) const;
   // The region's grid and planner, built on first use. Throws NoPathError for an unknown region.
   RegionEntry& entry(RegionId region) const;
   Ends startOf(const Pose2D& start) const;

@@ -1,6 +1,6 @@
 // Tests the route planner on the kernel's map of a hallway with two rooms behind doors
-// (ExportedFloor.h): a route from the hallway into a room passes the room's door, its path stays in
-// free cells and its targets are spaced and labelled; goals by region ID, region name and object
+// (ExportedFloor.h): a route from the hallway into a room passes the room's door through its
+// middle, and its targets are spaced and labelled; goals by region ID, region name and object
 // name; typed refusals for goals outside the map or in an obstacle and for far starts; a start
 // just outside the map is placed in it.
 #include <cppunit/extensions/HelperMacros.h>
@@ -63,6 +63,11 @@ class RoutePlannerTest : public CppUnit::TestFixture {
       }
     }
     CPPUNIT_ASSERT(throughDoor);
+    // Through the middle of the door's gateway points, whatever the crossing points' offsets.
+    const auto views = rgnav::gatewayViews(*kernel_);
+    const auto door = std::find_if(views.begin(), views.end(), [&](const auto& g) { return g.id == plan.route[0].gateway; });
+    const Vector2d middle = 0.5 * (door->gatewayPoints[0] + door->gatewayPoints[1]);
+    CPPUNIT_ASSERT(std::any_of(plan.path.begin(), plan.path.end(), [&](const Vector2d& p) { return (p - middle).norm() < 1e-9; }));
     CPPUNIT_ASSERT_DOUBLES_EQUAL(pathLength(plan.path), plan.lengthM, 1e-9);
     CPPUNIT_ASSERT(plan.lengthM >= (Vector2d(9.0, 4.5) - Vector2d(1.0, 1.0)).norm());
     CPPUNIT_ASSERT(plan.lengthM < 13.0);
