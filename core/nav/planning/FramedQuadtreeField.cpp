@@ -40,7 +40,8 @@ FramedQuadtreePlanner::Field FramedQuadtreePlanner::fieldTo(const Eigen::Vector2
     open.push({field.cost[static_cast<std::size_t>(n)], n});
   }
   while (!open.empty()) {
-    const auto [g, u] = open.top();
+    const double g = open.top().first;
+    const std::int32_t u = open.top().second;
     open.pop();
     if (g > field.cost[static_cast<std::size_t>(u)]) continue;
     tree_.forEachNeighbour(u, [&](std::int32_t v) {

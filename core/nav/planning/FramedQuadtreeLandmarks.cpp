@@ -67,7 +67,8 @@ std::vector<double> distancesFrom(const FramedQuadtree& tree, const LineOfSight&
   std::make_heap(heap.begin(), heap.end(), later);
   while (!heap.empty()) {
     std::pop_heap(heap.begin(), heap.end(), later);
-    const auto [d, node] = heap.back();
+    const double d = heap.back().first;
+    const std::int32_t node = heap.back().second;
     heap.pop_back();
     if (d != distance[static_cast<std::size_t>(node)]) continue;
     const Eigen::Vector2d x = centre(node);
