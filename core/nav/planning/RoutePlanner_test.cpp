@@ -2,7 +2,8 @@
 // (ExportedFloor.h): a route from the hallway into a room passes the room's door through its
 // middle, and its targets are spaced and labelled; goals by region ID, region name and object
 // name; typed refusals for goals outside the map or in an obstacle and for far starts; a start
-// just outside the map is placed in it.
+// just outside the map is placed in it; a gateway outside the RG graph joins its regions, but not
+// through a wall.
 #include <cppunit/extensions/HelperMacros.h>
 
 #include <algorithm>
@@ -40,6 +41,7 @@ class RoutePlannerTest : public CppUnit::TestFixture {
   CPPUNIT_TEST(badGoalsAndStartsAreTypedNoPath);
   CPPUNIT_TEST(aStartJustOutsideIsPlacedInTheNearestRegion);
   CPPUNIT_TEST(aGatewayWithAnUnknownSideStillJoinsItsRegions);
+  CPPUNIT_TEST(noPassageThroughAWall);
   CPPUNIT_TEST_SUITE_END();
 
  public:
@@ -149,6 +151,23 @@ class RoutePlannerTest : public CppUnit::TestFixture {
     CPPUNIT_ASSERT(plan.goalRegion == before.goalRegion);
     CPPUNIT_ASSERT(std::any_of(plan.route.begin(), plan.route.end(), [&](const auto& n) { return n.gateway == door; }));
     CPPUNIT_ASSERT_DOUBLES_EQUAL(before.lengthM, plan.lengthM, 0.5);
+  }
+
+  // A detected gateway no region has taken in yet, with its crossing points in the two rooms on
+  // either side of the wall between them (x in [6, 7]): the straight line between them crosses
+  // the wall, so the route from room to room still goes through the hallway.
+  void noPassageThroughAWall() {
+    rgnav::PlanningMap map = rgnav::planningMapOf(*kernel_);
+    rgnav::GatewayView fake;
+    fake.id = rgnav::GatewayId{999};
+    fake.gatewayPoints = {{6.5, 3.5}, {6.5, 4.5}};
+    fake.crossingPoints = {{5.5, 4.0}, {7.5, 4.0}};
+    map.gateways.push_back(fake);
+    map.revision += 1;
+    planner_.setMap(map);
+    const Plan plan = planner_.plan({4.0, 4.0, 0.0}, PlanGoal::at({9.0, 4.0}));
+    CPPUNIT_ASSERT(std::none_of(plan.route.begin(), plan.route.end(), [&](const auto& n) { return n.gateway == fake.id; }));
+    CPPUNIT_ASSERT(plan.lengthM > 7.0);  // down through door 11, along the hallway, up through door 12
   }
 
   // At the hallway's south wall, off its free cells: placed on the nearest free cell. 0.3 m behind
