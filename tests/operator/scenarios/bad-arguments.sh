@@ -71,8 +71,10 @@ mkdir -p "$WORK/run/logs" "$WORK/exports"
 setsid "$BIN/rgnav-watchdog" --set "$set_file" </dev/null >>"$WORK/run/logs/watchdog.log" 2>&1 &
 watchdog_pid=$!
 trap '"$BIN/rgnav-ctl" --set "$set_file" shutdown >/dev/null 2>&1; wait "$watchdog_pid" 2>/dev/null' EXIT
-run "$BIN/rgnav-ctl" --set "$set_file" wait-running --timeout 30
+# Up to 60 s: in the full test suite this runs beside the fault tests on two cores.
+run --timeout 90 "$BIN/rgnav-ctl" --set "$set_file" wait-running --timeout 60
 expect_ok
+((RUN_RC == 0)) || sed 's/^/  | watchdog: /' "$WORK/run/logs/watchdog.log"
 export RGNAV_NAMING="127.0.0.1:$naming_port"
 
 # An unknown module is named as such, not as an unexpected exception.
