@@ -95,7 +95,7 @@ void RoutePlanner::setMap(PlanningMap map) {
   map_ = std::move(map);
   if (!same) {
     regions_.clear();
-    passages_.reset();
+    routeGraph_.reset();
     return;
   }
   for (auto it = regions_.begin(); it != regions_.end();) {
@@ -226,8 +226,7 @@ std::optional<Eigen::Vector2d> RoutePlanner::doorMiddle(GatewayId id) const {
   return std::nullopt;
 }
 
-const std::vector<RoutePlanner::Passage>& RoutePlanner::passages() const {
-  if (passages_) return *passages_;
+std::vector<RoutePlanner::Passage> RoutePlanner::findPassages() const {
   std::vector<Passage> out;
   for (std::size_t i = 0; i < map_.regions.size(); ++i)
     for (std::size_t k = i + 1; k < map_.regions.size(); ++k) {
@@ -249,48 +248,74 @@ const std::vector<RoutePlanner::Passage>& RoutePlanner::passages() const {
         if (passageFree(passage.ends[i], passage.ends[k], middle)) passage.links.push_back({i, k});
     if (!passage.links.empty()) out.push_back(std::move(passage));
   }
-  return passages_.emplace(std::move(out));
+  return out;
+}
+
+// The route search's nodes: the RG graph's crossing points, then the ends of every other passage;
+// per node, the links that do not pass through a region (gateway edges at their learned cost,
+// passage links at their length), and per region the nodes in it. The start and the goal join
+// per query.
+struct RoutePlanner::RouteGraph {
+  struct Node {
+    Eigen::Vector2d position;
+    RegionId region;
+    std::optional<GraphNodeView> crossing;  // a gateway's crossing point (to be placed on a free cell)
+  };
+  std::vector<Node> nodes;
+  std::vector<std::vector<std::pair<std::size_t, double>>> jumps;  // per node: (to, cost)
+  std::map<RegionId, std::vector<std::size_t>> members;
+  std::map<std::pair<std::size_t, std::size_t>, double> learned;  // region edges' learned costs
+};
+
+const RoutePlanner::RouteGraph& RoutePlanner::routeGraph() const {
+  if (routeGraph_) return *routeGraph_;
+  auto made = std::make_shared<RouteGraph>();
+  for (const GraphNodeView& n : map_.graph.nodes) made->nodes.push_back({n.position, n.region, n});
+  made->jumps.resize(made->nodes.size());
+  for (const GraphEdgeView& e : map_.graph.edges) {
+    if (e.throughGateway()) {
+      made->jumps[e.from].push_back({e.to, e.costM});
+      made->jumps[e.to].push_back({e.from, e.costM});
+    } else {
+      made->learned[std::minmax(e.from, e.to)] = e.costM;
+    }
+  }
+  for (const Passage& passage : findPassages()) {
+    const std::size_t first = made->nodes.size();
+    for (const PassageEnd& end : passage.ends) {
+      std::optional<GraphNodeView> crossing;
+      if (!passage.gateway.isNone()) crossing = GraphNodeView{passage.gateway, end.crossing, end.region, end.position};
+      made->nodes.push_back({end.position, end.region, crossing});
+    }
+    made->jumps.resize(made->nodes.size());
+    for (const auto& [i, k] : passage.links) {
+      const double length = (passage.ends[i].position - passage.ends[k].position).norm();
+      made->jumps[first + i].push_back({first + k, length});
+      made->jumps[first + k].push_back({first + i, length});
+    }
+  }
+  for (std::size_t i = 0; i < made->nodes.size(); ++i) made->members[made->nodes[i].region].push_back(i);
+  routeGraph_ = made;
+  return *routeGraph_;
 }
 
 Plan RoutePlanner::plan(const Pose2D& startPose, const PlanGoal& goal) const {
   const Ends start = startOf(startPose);
   const Ends end = goalOf(goal, start.point);
 
-  // The search's nodes: the RG graph's crossing points, the ends of every other passage, the
-  // start and the goal.
-  constexpr std::size_t kNoPassage = std::numeric_limits<std::size_t>::max();
-  struct Node {
-    Eigen::Vector2d position;
-    RegionId region;
-    bool onGateway = false;           // a crossing point (to be placed on a free cell)
-    std::size_t passage = kNoPassage;  // index in passages(); none for RG graph nodes, start, goal
-    std::size_t crossing = 0;         // a gateway passage's: the crossing point's index
-  };
-  std::vector<Node> nodes;
-  for (const GraphNodeView& n : map_.graph.nodes) nodes.push_back({n.position, n.region, true});
-  const std::size_t graphNodes = nodes.size();
-  std::vector<std::vector<std::size_t>> passageNodes(passages().size());
-  for (std::size_t k = 0; k < passages().size(); ++k)
-    for (std::size_t e = 0; e < passages()[k].ends.size(); ++e) {
-      passageNodes[k].push_back(nodes.size());
-      const PassageEnd& end = passages()[k].ends[e];
-      nodes.push_back({end.position, end.region, !passages()[k].gateway.isNone(), k, end.crossing});
-    }
+  // The route graph's nodes, then the start and the goal.
+  const RouteGraph& graph = routeGraph();
+  std::vector<RouteGraph::Node> nodes = graph.nodes;
   const std::size_t s = nodes.size(), g = nodes.size() + 1;
-  nodes.push_back({start.point, RegionId{}, false});
-  nodes.push_back({end.point, RegionId{}, false});
-  std::map<RegionId, std::vector<std::size_t>> members;
-  for (std::size_t i = 0; i < s; ++i) members[nodes[i].region].push_back(i);
-  std::map<std::pair<std::size_t, std::size_t>, double> learned;  // region edges' learned costs
-  for (const GraphEdgeView& e : map_.graph.edges)
-    if (!e.throughGateway()) learned[std::minmax(e.from, e.to)] = e.costM;
+  nodes.push_back({start.point, RegionId{}, std::nullopt});
+  nodes.push_back({end.point, RegionId{}, std::nullopt});
 
   // Links through a region. A node's point is placed on a free cell (a crossing point in a blocked
   // cell, at a narrow door, moves to the nearest free one); a link to a node costs what the
   // planner's field to that node says (one field per node and map revision, built on first use),
   // a link from the start to the goal in one region is planned directly.
   const auto placed = [&](RegionEntry& r, std::size_t i) -> std::optional<Eigen::Vector2d> {
-    if (!nodes[i].onGateway) return nodes[i].position;
+    if (!nodes[i].crossing) return nodes[i].position;
     if (const auto it = r.placements.find(i); it != r.placements.end()) return it->second;
     return r.placements.emplace(i, r.nearestFree(nodes[i].position, config_.crossingSnapM, true)).first->second;
   };
@@ -332,8 +357,8 @@ Plan RoutePlanner::plan(const Pose2D& startPose, const PlanGoal& goal) const {
     const auto [target, from] = fieldEnds(a, b);
     const Eigen::Vector2d fromAt = *placed(r, from), targetAt = *placed(r, target);
     Polyline path = r.inMap(r.planner->pathTo(*fieldOf(r, target), r.cells(fromAt)), fromAt, targetAt);
-    if (nodes[from].onGateway) path.insert(path.begin(), nodes[from].position);
-    if (nodes[target].onGateway) path.push_back(nodes[target].position);
+    if (nodes[from].crossing) path.insert(path.begin(), nodes[from].position);
+    if (nodes[target].crossing) path.push_back(nodes[target].position);
     if (target != b) std::reverse(path.begin(), path.end());
     return path;
   };
@@ -366,14 +391,15 @@ Plan RoutePlanner::plan(const Pose2D& startPose, const PlanGoal& goal) const {
   };
   const auto lowerBound = [&](std::size_t a, std::size_t b) {
     const double straight = (nodes[a].position - nodes[b].position).norm();
-    const auto it = learned.find(std::minmax(a, b));
-    return it == learned.end() ? straight : std::max(straight, it->second);
+    const auto it = graph.learned.find(std::minmax(a, b));
+    return it == graph.learned.end() ? straight : std::max(straight, it->second);
   };
   const auto inEnds = [](const Ends& e, RegionId r) { return std::find(e.regions.begin(), e.regions.end(), r) != e.regions.end(); };
   const auto throughRegion = [&](std::size_t u, RegionId r, double at) {
     if (inEnds(end, r)) push(u, g, at + lowerBound(u, g), r, false);
-    for (std::size_t v : members[r])
-      if (v != u) push(u, v, at + lowerBound(u, v), r, false);
+    if (const auto it = graph.members.find(r); it != graph.members.end())
+      for (std::size_t v : it->second)
+        if (v != u) push(u, v, at + lowerBound(u, v), r, false);
   };
 
   push(s, s, 0.0, RegionId{}, true);
@@ -394,19 +420,7 @@ Plan RoutePlanner::plan(const Pose2D& startPose, const PlanGoal& goal) const {
       continue;
     }
     throughRegion(e.node, nodes[e.node].region, at);
-    if (nodes[e.node].passage != kNoPassage) {
-      const std::size_t k = nodes[e.node].passage;
-      const std::size_t self = e.node - passageNodes[k].front();
-      for (const auto& [i, j] : passages()[k].links)
-        if (i == self || j == self) {
-          const std::size_t v = passageNodes[k][i == self ? j : i];
-          push(e.node, v, at + (nodes[v].position - nodes[e.node].position).norm(), RegionId{}, true);
-        }
-    } else {
-      for (const GraphEdgeView& edge : map_.graph.edges)
-        if (edge.throughGateway() && (edge.from == e.node || edge.to == e.node))
-          push(e.node, edge.from == e.node ? edge.to : edge.from, at + edge.costM, RegionId{}, true);
-    }
+    for (const auto& [v, cost] : graph.jumps[e.node]) push(e.node, v, at + cost, RegionId{}, true);
   }
   if (!via[g]) {
     std::string from, to;
@@ -420,9 +434,6 @@ Plan RoutePlanner::plan(const Pose2D& startPose, const PlanGoal& goal) const {
   // than the legs' own wall costs do). A door is passed through the middle of its gateway points:
   // the crossing points lie off the door at either side, not necessarily in line with its middle,
   // and the straight line between them can graze a jamb.
-  const auto gatewayOf = [&](std::size_t i) {
-    return i < graphNodes ? map_.graph.nodes[i].gateway : (nodes[i].onGateway ? passages()[nodes[i].passage].gateway : GatewayId{});
-  };
   std::vector<std::size_t> order{g};
   while (order.back() != s) order.push_back(via[order.back()]->from);
   std::reverse(order.begin(), order.end());
@@ -433,15 +444,14 @@ Plan RoutePlanner::plan(const Pose2D& startPose, const PlanGoal& goal) const {
   out.path.push_back(start.point);
   for (std::size_t k = 1; k < order.size(); ++k) {
     const std::size_t a = order[k - 1], b = order[k];
-    if (b < graphNodes) out.route.push_back(map_.graph.nodes[b]);
-    if (nodes[b].onGateway && b >= graphNodes)
-      out.route.push_back({passages()[nodes[b].passage].gateway, nodes[b].crossing, nodes[b].region, nodes[b].position});
+    if (nodes[b].crossing) out.route.push_back(*nodes[b].crossing);
     const Via& step = *via[b];
     const RegionId region = step.region.isNone() ? nodes[b].region : step.region;
     if (regions.empty() || regions.back() != region) regions.push_back(region);
     Polyline leg = step.region.isNone() ? Polyline{nodes[a].position, nodes[b].position} : linkPath(region, a, b);
-    const bool acrossGateway = step.region.isNone() && !gatewayOf(b).isNone() && nodes[a].position != nodes[b].position;
-    if (const auto middle = acrossGateway ? doorMiddle(gatewayOf(b)) : std::nullopt) leg.insert(leg.begin() + 1, *middle);
+    const bool acrossGateway = step.region.isNone() && nodes[b].crossing && nodes[a].position != nodes[b].position;
+    if (const auto middle = acrossGateway ? doorMiddle(nodes[b].crossing->gateway) : std::nullopt)
+      leg.insert(leg.begin() + 1, *middle);
     for (std::size_t i = 1; i < leg.size(); ++i)
       if ((leg[i] - out.path.back()).norm() > 1e-9) out.path.push_back(leg[i]);
   }

@@ -123,8 +123,11 @@ class RoutePlanner {
     std::vector<PassageEnd> ends;
     std::vector<std::pair<std::size_t, std::size_t>> links;  // the ends joined, by index
   };
-  // Found on first use after a map change.
-  const std::vector<Passage>& passages() const;
+  std::vector<Passage> findPassages() const;
+  // The route search's nodes and links of the map now (RoutePlanner.cpp), found on first use after
+  // a map change.
+  struct RouteGraph;
+  const RouteGraph& routeGraph() const;
   // The middle of a door's gateway points; none for a gateway that is no door.
   std::optional<Eigen::Vector2d> doorMiddle(GatewayId gateway) const;
   // Whether two ends of a gateway passage may be joined (see above); `middle`: a door's.
@@ -137,7 +140,7 @@ class RoutePlanner {
   RoutePlannerConfig config_;
   PlanningMap map_;
   mutable std::map<RegionId, std::shared_ptr<RegionEntry>> regions_;  // built on first use
-  mutable std::optional<std::vector<Passage>> passages_;
+  mutable std::shared_ptr<const RouteGraph> routeGraph_;
 };
 
 }  // namespace rgnav
