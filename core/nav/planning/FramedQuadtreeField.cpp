@@ -26,17 +26,14 @@ FramedQuadtreePlanner::Field FramedQuadtreePlanner::fieldTo(const Eigen::Vector2
   field.targetQuad = tree_.quadOf(*cell);
   field.cost.assign(tree_.nodeCount(), kUnreachable);
   field.next.assign(tree_.nodeCount(), -1);
-  const bool costs = !nodeCost_.empty();
-  const float targetCost = costs ? cellCost_[static_cast<std::size_t>(cell->row) * grid_.width() + cell->col] : 0.0f;
+  field.targetCost = cellCostAt(*cell);
   const auto centre = [&](std::int32_t n) -> const Eigen::Vector2d& { return nodeCentres_[static_cast<std::size_t>(n)]; };
-  const auto nodeCost = [&](std::int32_t n) { return costs ? nodeCost_[static_cast<std::size_t>(n)] : 0.0f; };
-  const auto edge = [&](double length, float a, float b) { return length * (1.0 + 0.5 * (a + b)); };
 
   using Item = std::pair<double, std::int32_t>;
   std::priority_queue<Item, std::vector<Item>, std::greater<>> open;
   const FramedQuadtree::Quad& q = tree_.quads()[static_cast<std::size_t>(field.targetQuad)];
   for (std::int32_t n = q.firstNode; n < q.firstNode + q.nodeCount; ++n) {
-    field.cost[static_cast<std::size_t>(n)] = edge((centre(n) - target).norm(), nodeCost(n), targetCost);
+    field.cost[static_cast<std::size_t>(n)] = moveCost((centre(n) - target).norm(), nodeCostAt(n), field.targetCost);
     open.push({field.cost[static_cast<std::size_t>(n)], n});
   }
   while (!open.empty()) {
@@ -45,7 +42,7 @@ FramedQuadtreePlanner::Field FramedQuadtreePlanner::fieldTo(const Eigen::Vector2
     open.pop();
     if (g > field.cost[static_cast<std::size_t>(u)]) continue;
     tree_.forEachNeighbour(u, [&](std::int32_t v) {
-      const double through = g + edge((centre(v) - centre(u)).norm(), nodeCost(u), nodeCost(v));
+      const double through = g + moveCost((centre(v) - centre(u)).norm(), nodeCostAt(u), nodeCostAt(v));
       if (through < field.cost[static_cast<std::size_t>(v)]) {
         field.cost[static_cast<std::size_t>(v)] = through;
         field.next[static_cast<std::size_t>(v)] = u;
@@ -59,17 +56,14 @@ FramedQuadtreePlanner::Field FramedQuadtreePlanner::fieldTo(const Eigen::Vector2
 std::pair<double, std::int32_t> FramedQuadtreePlanner::fieldEntry(const Field& field, const Eigen::Vector2d& point) const {
   const std::optional<CellIndex> cell = freeCellAt(grid_, point);
   if (!cell) return {kUnreachable, -1};
-  const bool costs = !nodeCost_.empty();
-  const auto cellCost = [&](CellIndex c) { return costs ? cellCost_[static_cast<std::size_t>(c.row) * grid_.width() + c.col] : 0.0f; };
-  const float pointCost = cellCost(*cell);
-  const auto edge = [&](const Eigen::Vector2d& to, float cost) { return (to - point).norm() * (1.0 + 0.5 * (pointCost + cost)); };
+  const float pointCost = cellCostAt(*cell);
+  const auto edge = [&](const Eigen::Vector2d& to, float cost) { return moveCost((to - point).norm(), pointCost, cost); };
   std::pair<double, std::int32_t> best{kUnreachable, -1};
   const std::int32_t quad = tree_.quadOf(*cell);
-  if (quad == field.targetQuad) best.first = edge(field.target, cellCost(*freeCellAt(grid_, field.target)));
+  if (quad == field.targetQuad) best.first = edge(field.target, field.targetCost);
   const FramedQuadtree::Quad& q = tree_.quads()[static_cast<std::size_t>(quad)];
   for (std::int32_t n = q.firstNode; n < q.firstNode + q.nodeCount; ++n) {
-    const double through = field.cost[static_cast<std::size_t>(n)] +
-                           edge(nodeCentres_[static_cast<std::size_t>(n)], costs ? nodeCost_[static_cast<std::size_t>(n)] : 0.0f);
+    const double through = field.cost[static_cast<std::size_t>(n)] + edge(nodeCentres_[static_cast<std::size_t>(n)], nodeCostAt(n));
     if (through < best.first) best = {through, n};
   }
   return best;

@@ -40,7 +40,7 @@ FramedQuadtreePlanner::FramedQuadtreePlanner(const OccupancyGrid& grid, FramedQu
     nodeCost_.reserve(tree_.nodeCount());
     for (std::size_t n = 0; n < tree_.nodeCount(); ++n) {
       const CellIndex c = tree_.nodeCell(static_cast<std::int32_t>(n));
-      nodeCost_.push_back(cellCost_[static_cast<std::size_t>(c.row) * grid.width() + c.col]);
+      nodeCost_.push_back(cellCostAt(c));
     }
   }
 }
@@ -66,20 +66,18 @@ CellUnitPath FramedQuadtreePlanner::plan(const Eigen::Vector2d& start, const Eig
   }
   const std::int32_t startQuad = tree_.quadOf(*startCell), goalQuad = tree_.quadOf(*goalCell);
   const bool costs = !nodeCost_.empty();
-  const auto cellCost = [&](CellIndex c) { return cellCost_[static_cast<std::size_t>(c.row) * grid_.width() + c.col]; };
-  const float startCost = costs ? cellCost(*startCell) : 0.0f, goalCost = costs ? cellCost(*goalCell) : 0.0f;
+  const float startCost = cellCostAt(*startCell), goalCost = cellCostAt(*goalCell);
   const auto position = [&](std::int32_t id) -> const Eigen::Vector2d& {
     return id == startId ? start : id == goalId ? goal : nodeCentres_[static_cast<std::size_t>(id)];
   };
   const auto costOf = [&](std::int32_t id) -> float {
-    return id == startId ? startCost : id == goalId ? goalCost : nodeCost_[static_cast<std::size_t>(id)];
+    return id == startId ? startCost : id == goalId ? goalCost : nodeCostAt(id);
   };
   const auto later = [](const Open& a, const Open& b) { return a.f > b.f || (a.f == b.f && a.g < b.g); };
   const auto stateOf = [&](std::int32_t id) -> NodeState& { return state_[static_cast<std::size_t>(id)]; };
   const auto closed = [&](std::int32_t id) { return stateOf(id).closed == search_; };
   const auto edgeCost = [&](std::int32_t a, std::int32_t b) {
-    const double length = (position(b) - position(a)).norm();
-    return costs ? length * (1.0 + 0.5 * (costOf(a) + costOf(b))) : length;
+    return moveCost((position(b) - position(a)).norm(), costOf(a), costOf(b));
   };
   // The landmark distances of start and goal, through the frame of their quad.
   const auto landmarkDistances = [&](std::int32_t quad, const Eigen::Vector2d& p) {

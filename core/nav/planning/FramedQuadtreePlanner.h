@@ -72,6 +72,7 @@ class FramedQuadtreePlanner {
   struct Field {
     Eigen::Vector2d target = Eigen::Vector2d::Zero();
     std::int32_t targetQuad = -1;
+    float targetCost = 0.0f;           // the wall cost at the target
     std::vector<double> cost;          // per graph node; infinity where the target is not reachable
     std::vector<std::int32_t> next;    // per graph node: the next node towards the target; -1: the target
   };
@@ -85,6 +86,16 @@ class FramedQuadtreePlanner {
   CellUnitPath pathTo(const Field& field, const Eigen::Vector2d& point) const;
 
  private:
+  // The wall cost of a cell and of a graph node (0 without wall costs).
+  float cellCostAt(CellIndex c) const {
+    return cellCost_.empty() ? 0.0f : cellCost_[static_cast<std::size_t>(c.row) * grid_.width() + c.col];
+  }
+  float nodeCostAt(std::int32_t node) const {
+    return nodeCost_.empty() ? 0.0f : nodeCost_[static_cast<std::size_t>(node)];
+  }
+  // The cost of a straight move of `length` between places of wall costs a and b: the length
+  // weighed by the mean of the two (thesis 5.4, figure 5.8 right). Without wall costs, the length.
+  static double moveCost(double length, float a, float b) { return length * (1.0 + 0.5 * (a + b)); }
   // The cost from `point` to a field's target and the first node of that path (its quad's frame
   // node with the least cost through it; -1 when it goes straight to the target in the same quad);
   // infinite cost where there is none.
