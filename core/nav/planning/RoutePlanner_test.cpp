@@ -10,6 +10,7 @@
 #include <cmath>
 
 #include "core/nav/grid/PlanningErrors.h"
+#include "core/nav/planning/CellPoints.h"
 #include "core/nav/planning/KernelPlanningMap.h"
 #include "core/nav/planning/RoutePlanner.h"
 #include "core/rgmap/export/testing/ExportedFloor.h"
@@ -22,16 +23,6 @@ using rgnav::PlanGoal;
 using rgnav::Pose2D;
 using rgnav::RegionId;
 using rgnav::RoutePlanner;
-
-namespace {
-
-double pathLength(const std::vector<Vector2d>& path) {
-  double length = 0.0;
-  for (std::size_t i = 1; i < path.size(); ++i) length += (path[i] - path[i - 1]).norm();
-  return length;
-}
-
-}  // namespace
 
 class RoutePlannerTest : public CppUnit::TestFixture {
   CPPUNIT_TEST_SUITE(RoutePlannerTest);
@@ -70,7 +61,7 @@ class RoutePlannerTest : public CppUnit::TestFixture {
     const auto door = std::find_if(views.begin(), views.end(), [&](const auto& g) { return g.id == plan.route[0].gateway; });
     const Vector2d middle = 0.5 * (door->gatewayPoints[0] + door->gatewayPoints[1]);
     CPPUNIT_ASSERT(std::any_of(plan.path.begin(), plan.path.end(), [&](const Vector2d& p) { return (p - middle).norm() < 1e-9; }));
-    CPPUNIT_ASSERT_DOUBLES_EQUAL(pathLength(plan.path), plan.lengthM, 1e-9);
+    CPPUNIT_ASSERT_DOUBLES_EQUAL(rgnav::polylineLength(plan.path), plan.lengthM, 1e-9);
     CPPUNIT_ASSERT(plan.lengthM >= (Vector2d(9.0, 4.5) - Vector2d(1.0, 1.0)).norm());
     CPPUNIT_ASSERT(plan.lengthM < 13.0);
     // Targets 0.5 to 2 m apart, the goal last and in the goal's region.

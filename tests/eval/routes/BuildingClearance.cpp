@@ -4,13 +4,16 @@
 #include <cmath>
 #include <opencv2/imgproc.hpp>
 
-#include "core/raster/GridMat.h"
+#include "core/raster/DistanceField.h"
 
 namespace rgnav {
 
 BuildingClearance::BuildingClearance(const OccupancyGrid& plan, double radiusM) : plan_(plan), radiusM_(radiusM) {
-  const cv::Mat open = cellMat(plan) == static_cast<int>(Cell::Free);
-  cv::distanceTransform(open, distance_, cv::DIST_L2, cv::DIST_MASK_PRECISE);
+  const std::vector<float> squared = squaredDistanceToBlocked(plan);
+  distance_.create(plan.height(), plan.width(), CV_32F);
+  for (int r = 0; r < plan.height(); ++r)
+    for (int c = 0; c < plan.width(); ++c)
+      distance_.at<float>(r, c) = std::sqrt(squared[static_cast<std::size_t>(r) * plan.width() + c]);
   const cv::Mat room = distance_ > radiusM / plan.resolution();
   cv::connectedComponents(room, pieces_, 8, CV_32S);
   pieces_.setTo(-1, ~room);
