@@ -1,0 +1,71 @@
+// LowLevelDrive: the Low-Level Drive of thesis 5.5.3 without its server: it tracks the reference
+// that moves along the current DriveChain's TimedTrajectory with the PostureController's
+// Lyapunov-stable feedback law, one velocity command per tick (20 Hz in the module). It stops the
+// robot at the chain's end; it brakes (within the limits) to a standstill when it loses its
+// odometry input (no new reading for odometryTimeout) and when it has no chain. A newer chain
+// replaces the current one at once (the Collision Avoidance plans it to continue from where the
+// reference will be at its startTime).
+#pragma once
+
+#include <cstdint>
+#include <optional>
+#include <string>
+
+#include "core/common/SensorData.h"
+#include "core/common/VelocityCommand.h"
+#include "core/nav/motion/DriveChain.h"
+#include "core/nav/motion/PostureController.h"
+#include "core/nav/motion/TimedTrajectory.h"
+
+namespace rgnav {
+
+struct LowLevelDriveConfig {
+  MotionLimits limits;
+  PostureGains gains;
+  double periodSeconds = 0.05;          // one tick
+  double odometryTimeoutSeconds = 0.3;  // no newer reading for this long (wall time): brake
+};
+
+enum class DriveState { Idle, Tracking, Settling, Braking };
+std::string toString(DriveState state);
+
+struct DriveStatus {
+  DriveState state = DriveState::Idle;
+  std::uint64_t chainId = 0;      // the chain being driven (or last driven); 0: none yet
+  double progress = 0.0;          // m along it (the reference's arc length)
+  double remainingSeconds = 0.0;  // predicted time to its end
+  Pose2D reference;               // where the robot should be now
+  double lateralError = 0.0;      // m, robot to reference, perpendicular to its heading
+  bool chainFinished = false;     // the robot reached the chain's end and stands
+};
+
+class LowLevelDrive {
+ public:
+  // Throws ConfigError for bad limits, gains or periods.
+  explicit LowLevelDrive(const LowLevelDriveConfig& config);
+
+  // Replaces the current chain (InvalidArgumentError for an id not above the last one, or a
+  // chain the limits cannot drive from its start speed to a standstill).
+  void setChain(const DriveChain& chain);
+  // Brakes to a standstill now (the chain is dropped).
+  void stop();
+
+  // One control step. `latest`: the newest odometry reading (pose in the odometry frame, stamp
+  // on the odometry clock); `wallSeconds`: a monotonic wall clock, for the odometry timeout.
+  VelocityCommand tick(const std::optional<OdometryReading>& latest, double wallSeconds);
+
+  DriveStatus status() const;
+
+ private:
+  LowLevelDriveConfig config_;
+  PostureController controller_;
+  std::optional<DriveChain> chain_;
+  std::optional<TimedTrajectory> timed_;
+  std::uint64_t lastChainId_ = 0;
+  VelocityCommand lastCommand_;
+  std::optional<OdometryReading> lastReading_;
+  double lastReadingWall_ = 0.0;
+  DriveStatus status_;
+};
+
+}  // namespace rgnav
