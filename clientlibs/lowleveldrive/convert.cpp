@@ -2,6 +2,7 @@
 #include "clientlibs/lowleveldrive/convert.h"
 
 #include "clientlibs/common/convert.h"
+#include "core/common/Errors.h"
 
 namespace rgnav {
 
@@ -61,7 +62,7 @@ DriveState fromIdl(RGNav::DriveState state) {
   throw InvalidArgumentError("unknown drive state " + std::to_string(static_cast<int>(state)));
 }
 
-RGNav::DriveStatus toIdl(const DriveReport& r) {
+RGNav::DriveReport toIdl(const DriveReport& r) {
   const DriveStatus& d = r.drive;
   return {toIdl(d.state),       d.chainId,
           d.progress,           d.remainingSeconds,
@@ -70,7 +71,7 @@ RGNav::DriveStatus toIdl(const DriveReport& r) {
           r.loopPeriodP99Seconds * 1000.0, r.commandsSent};
 }
 
-DriveReport fromIdl(const RGNav::DriveStatus& s) {
+DriveReport fromIdl(const RGNav::DriveReport& s) {
   DriveReport r;
   r.drive = {fromIdl(s.state), s.chainId, s.progress, s.remainingSeconds, fromIdl(s.reference), s.lateralError,
              static_cast<bool>(s.chainFinished)};

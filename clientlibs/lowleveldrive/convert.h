@@ -23,7 +23,7 @@ MotionLimits fromIdl(const RGNav::MotionLimits& limits);
 RGNav::DriveState toIdl(DriveState state);
 DriveState fromIdl(RGNav::DriveState state);  // InvalidArgumentError for an unknown state
 // Loop periods in milliseconds on the wire, seconds in the code.
-RGNav::DriveStatus toIdl(const DriveReport& report);
-DriveReport fromIdl(const RGNav::DriveStatus& status);
+RGNav::DriveReport toIdl(const DriveReport& report);
+DriveReport fromIdl(const RGNav::DriveReport& status);
 
 }  // namespace rgnav

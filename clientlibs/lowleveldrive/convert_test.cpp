@@ -74,7 +74,7 @@ class LowLevelDriveConvertTest : public CppUnit::TestFixture {
     report.loopPeriodLastSeconds = 0.0512;
     report.loopPeriodP99Seconds = 0.0537;
     report.commandsSent = 901;
-    const RGNav::DriveStatus wire = toIdl(report);
+    const RGNav::DriveReport wire = toIdl(report);
     CPPUNIT_ASSERT_DOUBLES_EQUAL(51.2, wire.loopPeriodLastMs, 1e-9);
     CPPUNIT_ASSERT_DOUBLES_EQUAL(53.7, wire.loopPeriodP99Ms, 1e-9);
     const DriveReport back = fromIdl(wire);

@@ -28,7 +28,7 @@ void LowLevelDriveImpl::stop() {
   serve(Raises::FailedOnly, [&] { loop_.brake(); });
 }
 
-RGNav::DriveStatus LowLevelDriveImpl::driveStatus() {
+RGNav::DriveReport LowLevelDriveImpl::driveStatus() {
   return serve(Raises::FailedOnly, [&] { return toIdl(loop_.report()); });
 }
 

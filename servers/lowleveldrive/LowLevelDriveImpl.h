@@ -15,7 +15,7 @@ class LowLevelDriveImpl : public ServiceServant<POA_RGNav::LowLevelDrive> {
 
   void setChain(const RGNav::DriveChain& chain) override;
   void stop() override;
-  RGNav::DriveStatus driveStatus() override;
+  RGNav::DriveReport driveStatus() override;
   RGNav::MotionLimits limits() override;
 
  private:
