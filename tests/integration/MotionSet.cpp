@@ -48,10 +48,9 @@ OdometryReading MotionSet::latestOdometry() {
   return batch.records.back();
 }
 
-TrueState MotionSet::latestTruth() {
-  const DataId id = laser_->latestId();
-  return {id, laser_->scan(id).stamp, truth_->truePose(id)};
-}
+TrueState MotionSet::latestTruth() { return truthAt(laser_->latestId()); }
+
+TrueState MotionSet::truthAt(DataId id) { return {id, laser_->scan(id).stamp, truth_->truePose(id)}; }
 
 DriveChain straightThenArc(std::uint64_t id, const OdometryReading& from, double straightM, double easeM,
                            double curvature, double arcM) {

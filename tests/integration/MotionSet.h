@@ -34,8 +34,9 @@ class MotionSet {
   LowLevelDriveClient& drive() { return *drive_; }
   // The newest odometry reading of the Base.
   OdometryReading latestOdometry();
-  // The true pose at the newest scan.
+  // The true pose at the newest scan / at scan `id`.
   TrueState latestTruth();
+  TrueState truthAt(DataId id);
 
  private:
   ScratchDir scratch_;
