@@ -69,6 +69,14 @@ struct Rig {
   }
 };
 
+// The robot stands within 2 cm and 1 degree of the chain's end.
+void assertStandsAtEnd(const TrajectoryChain& chain, const DiffDriveRobot& robot) {
+  const Pose2D error = rgnav::between(chain.end(), robot.pose());
+  CPPUNIT_ASSERT(std::hypot(error.x, error.y) <= 0.02);
+  CPPUNIT_ASSERT(std::abs(error.theta) <= M_PI / 180.0);
+  CPPUNIT_ASSERT_EQUAL(0.0, robot.velocity().translational);
+}
+
 }  // namespace
 
 class LowLevelDriveTest : public CppUnit::TestFixture {
@@ -95,9 +103,7 @@ class LowLevelDriveTest : public CppUnit::TestFixture {
     CPPUNIT_ASSERT(rig.drive.status().chainFinished);
     CPPUNIT_ASSERT(rig.drive.status().state == DriveState::Idle);
     CPPUNIT_ASSERT_DOUBLES_EQUAL(predicted, rig.now, 0.05 * predicted);
-    const Pose2D error = rgnav::between(chain.end(), rig.robot.pose());
-    CPPUNIT_ASSERT(std::hypot(error.x, error.y) <= 0.02);
-    CPPUNIT_ASSERT(std::abs(error.theta) <= M_PI / 180.0);
+    assertStandsAtEnd(chain, rig.robot);
     CPPUNIT_ASSERT(worstLateral < 0.02);
     // It stays there.
     for (int k = 0; k < 20; ++k) rig.step();
@@ -115,9 +121,7 @@ class LowLevelDriveTest : public CppUnit::TestFixture {
     CPPUNIT_ASSERT(rig.drive.status().state == DriveState::Tracking);
     CPPUNIT_ASSERT(std::abs(rig.drive.status().lateralError) < 0.005);
     rig.runUntilFinished(30.0);
-    const Pose2D error = rgnav::between(chain.end(), rig.robot.pose());
-    CPPUNIT_ASSERT(std::hypot(error.x, error.y) <= 0.02);
-    CPPUNIT_ASSERT(std::abs(error.theta) <= M_PI / 180.0);
+    assertStandsAtEnd(chain, rig.robot);
   }
 
   void brakesOnOdometryLoss() {
@@ -164,9 +168,7 @@ class LowLevelDriveTest : public CppUnit::TestFixture {
     CPPUNIT_ASSERT(status.progress > 0.5);
     rig.runUntilFinished(30.0);
     CPPUNIT_ASSERT(rig.drive.status().chainFinished);
-    const Pose2D error = rgnav::between(turn.end(), rig.robot.pose());
-    CPPUNIT_ASSERT(std::hypot(error.x, error.y) <= 0.02);
-    CPPUNIT_ASSERT(std::abs(error.theta) <= M_PI / 180.0);
+    assertStandsAtEnd(turn, rig.robot);
     // A chain it cannot brake on is refused and the drive goes on.
     TrajectoryChain stub;
     stub.append({rig.robot.pose(), 0.1, 0.0, 0.0});
