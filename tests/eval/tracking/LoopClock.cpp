@@ -1,12 +1,26 @@
 // LoopClock: sleeping until fixed-grid deadlines and measuring the periods.
 #include "tests/eval/tracking/LoopClock.h"
 
+#include <pthread.h>
+#include <sched.h>
+
 #include <thread>
 
 namespace rgnav {
 
-LoopClock::LoopClock(double periodSeconds, bool realTime)
-    : period_(periodSeconds), realTime_(realTime), start_(Clock::now()) {}
+LoopClock::LoopClock(double periodSeconds, bool realTime) : period_(periodSeconds), realTime_(realTime) {
+  if (realTime_) {
+    sched_param param{};
+    param.sched_priority = 10;
+    fifo_ = pthread_setschedparam(pthread_self(), SCHED_FIFO, &param) == 0;
+  }
+  start_ = Clock::now();
+}
+
+std::string LoopClock::scheduling() const {
+  if (!realTime_) return "simulated";
+  return fifo_ ? "wall-fifo" : "wall-normal";
+}
 
 double LoopClock::next() {
   ++ticks_;
