@@ -43,7 +43,9 @@ struct LowLevelDriveConfig {
 };
 
 // The limits the drive's reference moves within (see referenceMargin): the predicted time of a
-// chain is TimedTrajectory(chain, referenceLimits(config), startSpeed).duration().
+// chain is TimedTrajectory(chain, referenceLimits(config), startSpeed).duration(). A chain these
+// cannot time (e.g. a stop planned just long enough at the full deceleration) is driven at the
+// full limits instead.
 MotionLimits referenceLimits(const LowLevelDriveConfig& config);
 
 enum class DriveState { Idle, Tracking, Settling, Braking };
@@ -77,6 +79,7 @@ class LowLevelDrive {
   DriveStatus status() const;
 
  private:
+  TimedTrajectory timedWithMargin(const DriveChain& chain) const;
   VelocityCommand track(const OdometryReading& reading);
   VelocityCommand settle(const OdometryReading& reading, double wallSeconds);
   VelocityCommand brake() const;
