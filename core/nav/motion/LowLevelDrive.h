@@ -9,9 +9,10 @@
 // on the odometry clock; feed-forward speeds are the reference's mean over the next tick, as the
 // base holds a command for one tick) -> Settling (the reference stands at the chain's end; the
 // robot creeps onto the end pose until within 1 cm and 0.5 deg at rest, or for at most 3 s) ->
-// Idle with chainFinished (after 3 s short of the end: Idle without). Odometry loss or stop(): Braking (the chain is dropped; speeds fall
-// along the current curvature at the deceleration limits) -> Idle. Every command keeps within
-// the MotionLimits, including their accelerations from the previous command.
+// Idle with chainFinished (after 3 s short of the end: Idle without). Odometry loss or stop():
+// Braking (the chain is dropped; speeds fall along the current curvature at the deceleration
+// limits) -> Idle. Every command keeps within the MotionLimits, including their accelerations
+// from the previous command.
 #pragma once
 
 #include <cstdint>

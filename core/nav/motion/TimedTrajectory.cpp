@@ -1,12 +1,13 @@
 // TimedTrajectory: the velocity profile of a chain. Each segment is cut into pieces of at most
-// 1 cm, at least four (every joint is a grid point, so no segment is skipped); the acceleration is constant on a
-// piece. A forward pass raises the speed as fast as the acceleration and the rotational
-// acceleration allow, a backward pass lowers it so that the robot can always brake to the next
-// caps and to the end speed; the caps at a grid point are the top speed, the top rotational speed,
-// the lateral acceleration and the rotational acceleration at constant speed (sharpness v^2) over
-// both pieces that touch it, and at a curvature jump the speed whose rotational step the
-// rotational acceleration makes up in one 50 ms control period. The rotational acceleration sharpness v^2 + kappa a is checked at
-// both ends of a piece (it is linear in kappa and in v^2 there).
+// 1 cm, at least four (every joint is a grid point, so no segment is skipped); the acceleration
+// is constant on a piece. A forward pass raises the speed as fast as the acceleration and the
+// rotational acceleration allow, a backward pass lowers it so that the robot can always brake to
+// the next caps and to the end speed. The caps at a grid point are the top speed, the top
+// rotational speed, the lateral acceleration and the rotational acceleration at constant speed
+// (sharpness v^2) over both pieces that touch it, and at a curvature jump the speed whose
+// rotational step the rotational acceleration makes up in one 50 ms control period. The
+// rotational acceleration sharpness v^2 + kappa a is checked at both ends of a piece (it is
+// linear in kappa and in v^2 there).
 #include "core/nav/motion/TimedTrajectory.h"
 
 #include <algorithm>

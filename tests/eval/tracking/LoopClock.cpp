@@ -26,7 +26,8 @@ double LoopClock::next() {
   ++ticks_;
   double now = ticks_ * period_;
   if (realTime_) {
-    std::this_thread::sleep_until(start_ + std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(now)));
+    const auto deadline = std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(now));
+    std::this_thread::sleep_until(start_ + deadline);
     now = std::chrono::duration<double>(Clock::now() - start_).count();
   }
   const double elapsed = now - now_;
