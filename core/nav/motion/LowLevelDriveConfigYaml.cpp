@@ -14,7 +14,8 @@ static_assert(sizeof(LowLevelDriveConfig) == 4 * sizeof(double) + sizeof(MotionL
 
 LowLevelDriveConfig parseLowLevelDriveConfig(const std::string& yamlText, const std::string& path) {
   // The drive's constructor validates limits, gains and periods (ConfigError naming the value).
-  return parseChecked<LowLevelDriveConfig>(yamlText, path, [](const LowLevelDriveConfig& config) { LowLevelDrive{config}; });
+  return parseChecked<LowLevelDriveConfig>(yamlText, path,
+                                           [](const LowLevelDriveConfig& config) { LowLevelDrive{config}; });
 }
 
 LowLevelDriveConfig loadLowLevelDriveConfig(const std::string& file) {
