@@ -20,10 +20,35 @@ void read(const ConfigNode& node, const std::string& key, double& target, double
   if (node.has(key)) target = node[key].asDouble() * scale;
 }
 
+Footprint readFootprint(const ConfigNode& node) {
+  node.expectKeys({"shape", "radius_m", "length_m", "width_m", "center_offset_m"});
+  const std::string shape = node["shape"].asString();
+  Footprint footprint;
+  if (shape == "disk") {
+    if (node.has("length_m") || node.has("width_m") || node.has("center_offset_m"))
+      node.fail("a disk has radius_m only");
+    footprint = Footprint::disk(node["radius_m"].asDouble());
+  } else if (shape == "rectangle") {
+    if (node.has("radius_m")) node.fail("a rectangle has length_m, width_m and center_offset_m, not radius_m");
+    footprint = Footprint::rectangle(node["length_m"].asDouble(), node["width_m"].asDouble());
+    read(node, "center_offset_m", footprint.centerOffset);
+  } else {
+    node["shape"].fail("is disk or rectangle, not '" + shape + "'");
+  }
+  try {
+    validate(footprint);
+  } catch (const ConfigError& e) {
+    node.fail(e.what());
+  }
+  return footprint;
+}
+
 void readRobot(const ConfigNode& node, DiffDriveConfig& robot) {
-  node.expectKeys({"radius_m", "max_velocity_mps", "max_rotation_radps", "max_acceleration_mps2",
+  node.expectKeys({"radius_m", "footprint", "max_velocity_mps", "max_rotation_radps", "max_acceleration_mps2",
                    "max_rotation_acceleration_radps2"});
-  read(node, "radius_m", robot.radius);
+  if (node.has("radius_m") && node.has("footprint")) node.fail("give radius_m (a disk) or footprint, not both");
+  if (node.has("radius_m")) robot.footprint = Footprint::disk(node["radius_m"].asDouble());
+  if (node.has("footprint")) robot.footprint = readFootprint(node["footprint"]);
   read(node, "max_velocity_mps", robot.maxTranslationalVelocity);
   read(node, "max_rotation_radps", robot.maxRotationalVelocity);
   read(node, "max_acceleration_mps2", robot.maxTranslationalAcceleration);
@@ -52,6 +77,15 @@ void readLaser(const ConfigNode& node, LaserConfig& laser) {
   read(node, "dropout_probability", laser.dropoutProbability);
 }
 
+void readPeople(const ConfigNode& node, PeopleConfig& people) {
+  node.expectKeys({"count", "radius_m", "min_speed_mps", "max_speed_mps", "seed"});
+  if (node.has("count")) people.count = static_cast<int>(node["count"].asInteger(0, 10000));
+  read(node, "radius_m", people.radius);
+  read(node, "min_speed_mps", people.minSpeed);
+  read(node, "max_speed_mps", people.maxSpeed);
+  if (node.has("seed")) people.seed = static_cast<std::uint64_t>(node["seed"].asInteger(0, INT64_MAX));
+}
+
 }  // namespace
 
 SimulationConfig parseSimulationConfig(const std::string& yamlText) {
@@ -65,13 +99,14 @@ SimulationConfig parseSimulationConfig(const std::string& yamlText) {
   if (document.IsNull()) return config;
   const ConfigVars noVariables;
   const ConfigNode root(document, "", noVariables);
-  root.expectKeys({"step_s", "steps_per_scan", "seed", "robot", "odometry", "laser"});
+  root.expectKeys({"step_s", "steps_per_scan", "seed", "robot", "odometry", "laser", "people"});
   read(root, "step_s", config.stepSeconds);
   if (root.has("steps_per_scan")) config.stepsPerScan = static_cast<int>(root["steps_per_scan"].asInteger(1, 1000));
   if (root.has("seed")) config.seed = static_cast<std::uint64_t>(root["seed"].asInteger(0, INT64_MAX));
   if (root.has("robot")) readRobot(root["robot"], config.robot);
   if (root.has("odometry")) readOdometry(root["odometry"], config.odometry);
   if (root.has("laser")) readLaser(root["laser"], config.laser);
+  if (root.has("people")) readPeople(root["people"], config.people);
   validate(config);
   LaserModel{config.laser};  // validates the laser
   return config;
