@@ -54,6 +54,7 @@ void validate(const CollisionAvoidanceConfig& c) {
   nonNegative(c.progressWeightSPerM, "progress_weight_s_per_m");
   nonNegative(c.planningLatencyS, "planning_latency_s");
   positive(c.replanPeriodS, "replan_period_s");
+  nonNegative(c.refreshDistanceM, "refresh_distance_m");
   positive(c.targetPassedM, "target_passed_m");
   positive(c.goalToleranceM, "goal_tolerance_m");
   positive(c.blockedWaitS, "blocked_wait_s");

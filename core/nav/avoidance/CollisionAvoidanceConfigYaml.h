@@ -59,6 +59,7 @@ void describe(V& v, CollisionAvoidanceConfig& c) {
   v.field("progress_weight_s_per_m", c.progressWeightSPerM);
   v.field("planning_latency_s", c.planningLatencyS);
   v.field("replan_period_s", c.replanPeriodS);
+  v.field("refresh_distance_m", c.refreshDistanceM);
   v.field("target_passed_m", c.targetPassedM);
   v.field("goal_tolerance_m", c.goalToleranceM);
   v.field("blocked_wait_s", c.blockedWaitS);

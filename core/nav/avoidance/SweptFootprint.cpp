@@ -77,10 +77,15 @@ SweptCheck checkSwept(const ObstacleClearance& clearance, const TrajectoryChain&
   if (chain.empty()) return out;
   const double length = chain.length();
   const int steps = std::max(1, static_cast<int>(std::ceil(length / options.stepM)));
+  // A robot that already stands closer than the margin may leave: near the start it must only
+  // not come closer.
+  const double atStart = clearance.footprintClearance(footprint, chain.start(), out.minClearance);
+  const double startRequired = std::min(options.marginM, atStart);
   for (int i = 0; i <= steps; ++i) {
     const double s = length * i / steps;
-    const double d = clearance.footprintClearance(footprint, chain.poseAt(s), out.minClearance);
-    if (d < options.marginM) {
+    const double d = i == 0 ? atStart : clearance.footprintClearance(footprint, chain.poseAt(s), out.minClearance);
+    const double required = s <= options.reliefM ? std::max(startRequired, 0.0) : options.marginM;
+    if (d < required || (i == 0 && d <= 0.0)) {
       out.clear = false;
       out.freeLength = std::max(0.0, length * (i - 1) / steps);
       return out;
