@@ -74,12 +74,12 @@ CollisionAvoidance::PlanStart CollisionAvoidance::planStart(const RobotState& st
             segmentStart += segment.length;
           }
         }
-        return {{ref.pose, ref.velocity, chain.curvatureAt(ref.s)}, sliceChain(chain, ref.s, leadEnd),
+        return {{ref.pose, ref.velocity, chain.curvatureAt(ref.s)}, sliceChain(chain, ref.s, leadEnd), ref.s,
                 chain.length() - ref.s};
       }
     }
   }
-  return {{state.pose, 0.0, 0.0}, {}, 0.0};
+  return {{state.pose, 0.0, 0.0}, {}, 0.0, 0.0};
 }
 
 SweptCheckOptions CollisionAvoidance::checkOptions() const {
@@ -154,10 +154,14 @@ std::optional<CollisionAvoidance::Scored> CollisionAvoidance::bestCandidate(cons
   return best;
 }
 
-std::optional<TrajectoryChain> CollisionAvoidance::brakingChain(const ChainStart& start) const {
-  if (start.speed < kStandingSpeed) return std::nullopt;
-  const double length = 1.1 * start.speed * start.speed / (2.0 * limits_.maxDeceleration) + 0.02;
-  return TrajectoryChain({TrajectorySegment{start.pose, length, start.curvature, 0.0}});
+std::optional<TrajectoryChain> CollisionAvoidance::brakingChain(const PlanStart& start) const {
+  const ChainStart& from = start.state;
+  if (from.speed < kStandingSpeed) return std::nullopt;
+  const double length = 1.1 * from.speed * from.speed / (2.0 * limits_.maxDeceleration) + 0.02;
+  // Along the current chain where it goes on far enough (it was free when planned), else on the
+  // arc the robot is on.
+  if (start.leftOnCurrent >= length) return sliceChain(current_->chain, start.onCurrent, start.onCurrent + length);
+  return TrajectoryChain({TrajectorySegment{from.pose, length, from.curvature, 0.0}});
 }
 
 AvoidanceDecision CollisionAvoidance::send(const RobotState& state, TimedTrajectory timed, AvoidanceAction action,
@@ -170,7 +174,7 @@ AvoidanceDecision CollisionAvoidance::send(const RobotState& state, TimedTraject
   return {action, std::move(drive), std::move(reason)};
 }
 
-AvoidanceDecision CollisionAvoidance::wait(const RobotState& state, const ChainStart& start, bool currentFree) {
+AvoidanceDecision CollisionAvoidance::wait(const RobotState& state, const PlanStart& start, bool currentFree) {
   if (!waitingSince_) waitingSince_ = state.stamp;
   if (state.stamp - *waitingSince_ >= config_.blockedWaitS && std::abs(state.velocity) < kStandingSpeed) {
     waitingSince_ = state.stamp;
@@ -179,7 +183,7 @@ AvoidanceDecision CollisionAvoidance::wait(const RobotState& state, const ChainS
   if (!currentFree) {
     if (auto braking = brakingChain(start)) {
       try {
-        return send(state, TimedTrajectory(std::move(*braking), limits_, start.speed, 0.0), AvoidanceAction::Wait,
+        return send(state, TimedTrajectory(std::move(*braking), limits_, start.state.speed, 0.0), AvoidanceAction::Wait,
                     "no free chain: braking");
       } catch (const InvalidArgumentError&) {
         // the limits cannot time the braking arc: the Low-Level Drive brakes at the chain's end
@@ -211,7 +215,7 @@ AvoidanceDecision CollisionAvoidance::update(const RobotState& state, std::span<
   auto best = bestCandidate(start, clearance);
   if (!best) {
     if (currentFree && running) return {AvoidanceAction::Keep, std::nullopt, "no better chain"};
-    return wait(state, start.state, currentFree && running);
+    return wait(state, start, currentFree && running);
   }
   waitingSince_.reset();
   return send(state, std::move(best->timed), AvoidanceAction::Drive, currentFree ? "replanned" : "obstacle on the chain");

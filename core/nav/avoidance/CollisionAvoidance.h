@@ -78,7 +78,8 @@ class CollisionAvoidance {
   struct PlanStart {
     ChainStart state;
     TrajectoryChain lead;
-    double leftOnCurrent = 0.0;
+    double onCurrent = 0.0;      // arc length of the start on the current chain
+    double leftOnCurrent = 0.0;  // 0: the next chain starts at the robot, standing
   };
 
   PlanStart planStart(const RobotState& state) const;
@@ -88,9 +89,9 @@ class CollisionAvoidance {
   double pathLeftFrom(const Pose2D& end) const;
   std::vector<Candidate> candidatesFrom(const PlanStart& start) const;
   std::optional<Scored> bestCandidate(const PlanStart& start, const ObstacleClearance& clearance) const;
-  std::optional<TrajectoryChain> brakingChain(const ChainStart& start) const;
+  std::optional<TrajectoryChain> brakingChain(const PlanStart& start) const;
   AvoidanceDecision send(const RobotState& state, TimedTrajectory timed, AvoidanceAction action, std::string reason);
-  AvoidanceDecision wait(const RobotState& state, const ChainStart& start, bool currentFree);
+  AvoidanceDecision wait(const RobotState& state, const PlanStart& start, bool currentFree);
 
   CollisionAvoidanceConfig config_;
   Footprint footprint_;

@@ -31,6 +31,7 @@ void validate(const CandidateConfig& c) {
   if (!(c.fanMaxDeflectionRad >= 0.0) || !(c.fanMaxDeflectionRad < M_PI))
     throw ConfigError("collision avoidance: candidates.fan_max_deflection_deg must lie in [0, 180)");
   positive(c.fanLengthM, "candidates.fan_length_m");
+  positive(c.pivotStepRad, "candidates.pivot_step_deg");
 }
 
 void validate(const GoalSeekingConfig& c) {

@@ -22,6 +22,8 @@ struct CandidateConfig {
   double fanMaxDeflectionRad = 1.2;  // fan: turn by up to +-this, then straight on
   std::size_t fanCount = 9;          // ... this many chains (odd: straight ahead is one)
   double fanLengthM = 1.5;           // length of each fan chain
+  double pivotStepRad = 0.785;       // standing: turns on the spot by k * step, k = 1..count
+  std::size_t pivotCount = 4;        // ... either way (0: no turns on the spot)
 };
 
 struct GoalSeekingConfig {

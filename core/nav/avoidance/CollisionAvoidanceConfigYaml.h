@@ -35,6 +35,8 @@ void describe(V& v, CandidateConfig& c) {
   v.degrees("fan_max_deflection_deg", c.fanMaxDeflectionRad);
   v.field("fan_count", c.fanCount);
   v.field("fan_length_m", c.fanLengthM);
+  v.degrees("pivot_step_deg", c.pivotStepRad);
+  v.field("pivot_count", c.pivotCount);
 }
 
 template <class V>
