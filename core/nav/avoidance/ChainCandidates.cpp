@@ -70,7 +70,7 @@ std::vector<Candidate> candidateChains(const ChainStart& start, std::span<const 
       if (auto chain = smoothPolyline(start.pose, shifted, shape))
         out.push_back({Candidate::Kind::Deviation, std::move(*chain)});
     }
-  if (start.speed <= 0.0 && config.pivotCount > 0) {
+  if (start.standing && config.pivotCount > 0) {
     // Standing: turn on the spot towards the first target, or by steps either way, then the path.
     std::vector<double> angles{normalizeAngle(std::atan2(first.y - start.pose.y, first.x - start.pose.x) - start.pose.theta)};
     for (std::size_t k = 1; k <= config.pivotCount; ++k)

@@ -30,6 +30,7 @@ struct ChainStart {
   Pose2D pose;
   double speed = 0.0;      // m/s
   double curvature = 0.0;  // 1/m
+  bool standing = false;   // the robot stands (it may turn on the spot)
 };
 
 struct Candidate {
