@@ -18,6 +18,8 @@ constexpr double kMaxTrackingErrorRad = 0.3;
 // A robot slower than this stands.
 constexpr double kStandingSpeed = 0.02;
 constexpr double kStandingTurnRate = 0.05;
+// A robot this slow within the goal tolerance has arrived (the drive settles the rest).
+constexpr double kArrivalSpeed = 0.1;
 // Curvatures below this are straight.
 constexpr double kStraight = 1e-6;
 // A new chain continues the current one's turn to its end if that lies within this.
@@ -248,7 +250,7 @@ AvoidanceDecision CollisionAvoidance::wait(const RobotState& state, const PlanSt
 AvoidanceDecision CollisionAvoidance::update(const RobotState& state, std::span<const ObstacleGrid> grids) {
   if (targets_.empty()) return {AvoidanceAction::Keep, std::nullopt, "no targets"};
   const Pose2D goal = targets_.back();
-  if (distance(state.pose, goal) <= config_.goalToleranceM && std::abs(state.velocity) < kStandingSpeed) {
+  if (distance(state.pose, goal) <= config_.goalToleranceM && std::abs(state.velocity) < kArrivalSpeed) {
     targets_.clear();
     current_.reset();
     currentTimed_.reset();
@@ -263,6 +265,7 @@ AvoidanceDecision CollisionAvoidance::update(const RobotState& state, std::span<
   const bool refresh = !endsAtGoal && start.leftOnCurrent < config_.refreshDistanceM;
   const bool newTargets = targetsChanged_ && (!running || state.stamp - lastPlan_ >= config_.replanPeriodS);
   if (currentFree && running && !refresh && !newTargets) return {AvoidanceAction::Keep, std::nullopt, "chain free"};
+  if (currentFree && endsAtGoal && !newTargets) return {AvoidanceAction::Keep, std::nullopt, "arriving"};
 
   auto best = bestCandidate(start, clearance);
   if (!best) {
