@@ -1,0 +1,300 @@
+// The Collision Avoidance's decisions (see CollisionAvoidance.h).
+#include "core/nav/avoidance/CollisionAvoidance.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "core/nav/avoidance/ObstacleFusion.h"
+
+namespace rgnav {
+
+namespace {
+
+// The reference of the current chain is trusted as the next chain's start only while the robot
+// tracks it this closely; otherwise the next chain starts where the robot will be, at its speed.
+constexpr double kMaxTrackingErrorM = 0.1;
+constexpr double kMaxTrackingErrorRad = 0.3;
+// A robot slower than this stands.
+constexpr double kStandingSpeed = 0.02;
+constexpr double kStandingTurnRate = 0.05;
+// A robot this slow within the goal tolerance has arrived (the drive settles the rest).
+constexpr double kArrivalSpeed = 0.1;
+// Curvatures below this are straight.
+constexpr double kStraight = 1e-6;
+// A new chain continues the current one's turn to its end if that lies within this.
+constexpr double kMaxLeadM = 3.0;
+// Chains cut short before an obstacle must still be this long to be worth driving.
+constexpr double kMinChainM = 0.15;
+// Straightening out from a turn uses this share of the rotational acceleration.
+constexpr double kUnwindShare = 0.9;
+// A chain with little left is replaced at most this often (each new chain restarts the drive's
+// reference, which must get going).
+constexpr double kRefreshPeriodS = 0.5;
+// Chains are cut back in these steps to where the robot can turn on the spot, with this much
+// more than the margin around it (the robot stops within a few centimetres of the chain's end).
+constexpr double kTurnableStepM = 0.05;
+constexpr double kTurnSlackM = 0.05;
+// What cutting a chain short costs: a chain that reaches its end beats one that stops early.
+constexpr double kCutPenaltyS = 2.0;
+
+double distance(const Pose2D& a, const Pose2D& b) { return std::hypot(a.x - b.x, a.y - b.y); }
+
+}  // namespace
+
+std::string toString(AvoidanceAction action) {
+  switch (action) {
+    case AvoidanceAction::Keep: return "keep";
+    case AvoidanceAction::Drive: return "drive";
+    case AvoidanceAction::Wait: return "wait";
+    case AvoidanceAction::Blocked: return "blocked";
+    case AvoidanceAction::GoalReached: return "goal-reached";
+  }
+  return "unknown";
+}
+
+CollisionAvoidance::CollisionAvoidance(const CollisionAvoidanceConfig& config, const Footprint& footprint,
+                                       const MotionLimits& limits)
+    : config_(config), footprint_(footprint), limits_(limits) {
+  validate(config);
+  validate(footprint);
+  validate(limits);
+}
+
+void CollisionAvoidance::setTargets(std::vector<Pose2D> targets) {
+  targets_ = std::move(targets);
+  targetsChanged_ = true;
+}
+
+CollisionAvoidance::PlanStart CollisionAvoidance::planStart(const RobotState& state) const {
+  if (current_ && currentTimed_) {
+    const double t = state.stamp + config_.planningLatencyS - current_->startTime;
+    if (t < currentTimed_->duration()) {
+      const ReferenceState ref = currentTimed_->stateAt(std::max(t, 0.0));
+      const Pose2D now = currentTimed_->stateAt(std::max(state.stamp - current_->startTime, 0.0)).pose;
+      if (distance(now, state.pose) < kMaxTrackingErrorM &&
+          std::abs(normalizeAngle(now.theta - state.pose.theta)) < kMaxTrackingErrorRad) {
+        const TrajectoryChain& chain = current_->chain;
+        // The lead: the rest of the turn the reference is in, up to where the curvature is 0.
+        double leadEnd = ref.s;
+        if (std::abs(chain.curvatureAt(ref.s)) > kStraight) {
+          double segmentStart = 0.0;
+          for (const TrajectorySegment& segment : chain.segments()) {
+            if (segmentStart > ref.s && std::abs(segment.curvature) <= kStraight) {
+              if (segmentStart - ref.s <= kMaxLeadM) leadEnd = segmentStart;
+              break;
+            }
+            segmentStart += segment.length;
+          }
+        }
+        return {{ref.pose, ref.velocity, chain.curvatureAt(ref.s)}, sliceChain(chain, ref.s, leadEnd), ref.s,
+                chain.length() - ref.s};
+      }
+    }
+  }
+  const bool standing = std::abs(state.velocity) < kStandingSpeed && std::abs(state.rotational) < kStandingTurnRate;
+  if (standing) return {{state.pose, 0.0, 0.0, true}, {}, 0.0, 0.0};
+  // Moving off the reference (or without a chain): where the robot's arc takes it meanwhile.
+  const double speed = std::max(0.0, state.velocity);
+  const double dt = config_.planningLatencyS;
+  const double heading = state.pose.theta + state.rotational * dt / 2.0;
+  const Pose2D ahead{state.pose.x + speed * dt * std::cos(heading), state.pose.y + speed * dt * std::sin(heading),
+                     normalizeAngle(state.pose.theta + state.rotational * dt)};
+  return {{ahead, speed, speed > kStandingSpeed ? state.rotational / speed : 0.0, false}, {}, 0.0, 0.0};
+}
+
+double CollisionAvoidance::margin() const {
+  return escaping_ ? std::min(config_.safetyMarginM, config_.escapeMarginM) : config_.safetyMarginM;
+}
+
+SweptCheckOptions CollisionAvoidance::checkOptions() const {
+  return {margin(), config_.sampleStepM, config_.comfortClearanceM};
+}
+
+bool CollisionAvoidance::currentStillFree(const RobotState& state, const ObstacleClearance& clearance) const {
+  if (!current_ || !currentTimed_) return false;
+  const double t = std::max(0.0, state.stamp - current_->startTime);
+  const double s = currentTimed_->stateAt(t).s;
+  const TrajectoryChain rest = sliceChain(current_->chain, s, current_->chain.length());
+  return rest.empty() || checkSwept(clearance, rest, footprint_, checkOptions()).clear;
+}
+
+void CollisionAvoidance::dropPassedTargets(const Pose2D& from) {
+  const double c = std::cos(from.theta), s = std::sin(from.theta);
+  std::size_t passed = 0;
+  while (passed + 1 < targets_.size()) {
+    const Pose2D& t = targets_[passed];
+    const double d = distance(t, from);
+    const double ahead = (t.x - from.x) * c + (t.y - from.y) * s;
+    if (d >= config_.targetPassedM && (ahead >= 0.0 || d >= 2.0 * config_.targetPassedM)) break;
+    ++passed;
+  }
+  targets_.erase(targets_.begin(), targets_.begin() + static_cast<std::ptrdiff_t>(passed));
+}
+
+double CollisionAvoidance::pathLeftFrom(const Pose2D& end) const {
+  double best = std::numeric_limits<double>::infinity();
+  double after = 0.0;  // path length from target j to the goal
+  for (std::size_t j = targets_.size(); j-- > 0;) {
+    if (j + 1 < targets_.size()) after += distance(targets_[j], targets_[j + 1]);
+    best = std::min(best, distance(end, targets_[j]) + after);
+  }
+  return best;
+}
+
+std::vector<Candidate> CollisionAvoidance::candidatesFrom(const PlanStart& start) const {
+  // Chains from a turning start first straighten out along a clothoid as sharp as the
+  // rotational acceleration allows at the start speed (no jump in the turn rate), or follow the
+  // current chain's turn to its end (the lead).
+  const auto after = [&](const TrajectoryChain& prefix, std::vector<Candidate>& out) {
+    const ChainStart from{prefix.end(), start.state.speed, 0.0, false};
+    for (Candidate& candidate : candidateChains(from, targets_, config_.candidates)) {
+      TrajectoryChain joined = prefix;
+      for (const TrajectorySegment& segment : candidate.chain.segments()) joined.append(segment);
+      out.push_back({candidate.kind, std::move(joined)});
+    }
+  };
+  const double kappa = start.state.curvature;
+  if (std::abs(kappa) <= kStraight) return candidateChains(start.state, targets_, config_.candidates);
+  std::vector<Candidate> all;
+  // (Within a turn on the spot only the lead: it ends the turn.)
+  if (std::abs(kappa) < kPivotCurvature) {
+    const double speed = std::max(start.state.speed, kStandingSpeed);
+    const double sharpness = std::min(config_.candidates.turnMaxSharpnessPerM2,
+                                      kUnwindShare * limits_.maxRotationalAcceleration / (speed * speed));
+    after(TrajectoryChain({TrajectorySegment{start.state.pose, std::abs(kappa) / sharpness, kappa,
+                                             kappa > 0.0 ? -sharpness : sharpness}}),
+          all);
+  }
+  if (!start.lead.empty()) after(start.lead, all);
+  return all;
+}
+
+std::optional<CollisionAvoidance::Scored> CollisionAvoidance::bestCandidate(const PlanStart& start,
+                                                                            const ObstacleClearance& clearance) const {
+  std::optional<Scored> best;
+  for (Candidate& candidate : candidatesFrom(start)) {
+    const SweptCheck check = checkSwept(clearance, candidate.chain, footprint_, checkOptions());
+    // The chain must end where the robot can turn on the spot (it cannot back out): cut it back
+    // from where it stops being free, or from its end, to such a pose.
+    const double end = check.clear ? candidate.chain.length() : check.freeLength;
+    const double keep = turnableUntil(candidate.chain, end, clearance);
+    if (keep < kMinChainM) continue;
+    double cost = 0.0;
+    if (keep < candidate.chain.length() - 1e-9) {
+      candidate.chain = sliceChain(candidate.chain, 0.0, keep);
+      cost += kCutPenaltyS;
+    }
+    std::optional<TimedTrajectory> timed;
+    try {
+      timed.emplace(candidate.chain, limits_, start.state.speed, 0.0);
+    } catch (const InvalidArgumentError&) {
+      continue;  // cannot stop within it from the start speed
+    }
+    cost += timed->duration() + config_.progressWeightSPerM * pathLeftFrom(candidate.chain.end()) +
+            config_.clearanceWeightSPerM *
+                std::max(0.0, config_.safetyMarginM + config_.comfortClearanceM - check.minClearance);
+    if (!best || cost < best->cost) best = Scored{std::move(candidate), std::move(*timed), cost};
+  }
+  return best;
+}
+
+double CollisionAvoidance::turnableUntil(const TrajectoryChain& chain, double end,
+                                         const ObstacleClearance& clearance) const {
+  const Footprint turning = Footprint::disk(footprint_.circumradius());
+  const double needed = margin() + kTurnSlackM;
+  for (double s = end; s >= kMinChainM; s -= kTurnableStepM)
+    if (clearance.footprintClearance(turning, chain.poseAt(s), needed) >= needed) return s;
+  return 0.0;
+}
+
+double CollisionAvoidance::brakingDistance(double speed) const {
+  return speed * speed / (2.0 * limits_.maxDeceleration);
+}
+
+std::optional<TimedTrajectory> CollisionAvoidance::brakingChain(const PlanStart& start) const {
+  const ChainStart& from = start.state;
+  if (from.speed < kStandingSpeed) return std::nullopt;
+  const double shortest = brakingDistance(from.speed) + 0.02;
+  // Along the current chain where it goes on far enough (it was free when planned), else on the
+  // arc the robot is on; turns brake slower (rotational acceleration), so longer if need be.
+  for (const double stretch : {1.1, 1.5, 2.0, 3.0, 5.0}) {
+    const double length = stretch * shortest;
+    TrajectoryChain chain = start.leftOnCurrent >= length
+                                ? sliceChain(current_->chain, start.onCurrent, start.onCurrent + length)
+                                : TrajectoryChain({TrajectorySegment{from.pose, length, from.curvature, 0.0}});
+    try {
+      return TimedTrajectory(std::move(chain), limits_, from.speed, 0.0);
+    } catch (const InvalidArgumentError&) {
+      // too short to stop within: longer
+    }
+  }
+  return std::nullopt;
+}
+
+AvoidanceDecision CollisionAvoidance::send(const RobotState& state, TimedTrajectory timed, AvoidanceAction action,
+                                           std::string reason) {
+  DriveChain drive{nextId_++, timed.chain(), timed.startSpeed(), state.stamp + config_.planningLatencyS};
+  currentTimed_ = std::move(timed);
+  current_ = drive;
+  lastPlan_ = state.stamp;
+  targetsChanged_ = false;
+  braking_ = false;
+  escaping_ = false;  // one chain with the escape margin, then the full margin again
+  return {action, std::move(drive), std::move(reason)};
+}
+
+AvoidanceDecision CollisionAvoidance::wait(const RobotState& state, const PlanStart& start, bool currentFree) {
+  if (!waitingSince_) waitingSince_ = state.stamp;
+  if (state.stamp - *waitingSince_ >= config_.blockedWaitS && std::abs(state.velocity) < kStandingSpeed) {
+    waitingSince_ = state.stamp;
+    escaping_ = true;
+    return {AvoidanceAction::Blocked, std::nullopt, "no free chain for " + std::to_string(config_.blockedWaitS) + " s"};
+  }
+  if (!currentFree && !braking_) {
+    if (auto braking = brakingChain(start)) {
+      AvoidanceDecision decision = send(state, std::move(*braking), AvoidanceAction::Wait, "no free chain: braking");
+      braking_ = true;
+      return decision;
+    }
+    if (start.state.speed >= kStandingSpeed) {
+      braking_ = true;
+      current_.reset();
+      currentTimed_.reset();
+      return {AvoidanceAction::Wait, std::nullopt, "no free chain: stop now", true};
+    }
+  }
+  return {AvoidanceAction::Wait, std::nullopt, "no free chain"};
+}
+
+AvoidanceDecision CollisionAvoidance::update(const RobotState& state, std::span<const ObstacleGrid> grids) {
+  if (targets_.empty()) return {AvoidanceAction::Keep, std::nullopt, "no targets"};
+  const Pose2D goal = targets_.back();
+  if (distance(state.pose, goal) <= config_.goalToleranceM && std::abs(state.velocity) < kArrivalSpeed) {
+    targets_.clear();
+    current_.reset();
+    currentTimed_.reset();
+    return {AvoidanceAction::GoalReached, std::nullopt, "at the goal"};
+  }
+  const ObstacleClearance clearance(fuseObstacles(grids));
+  const PlanStart start = planStart(state);
+  dropPassedTargets(start.state.pose);
+  const bool currentFree = currentStillFree(state, clearance);
+  const bool endsAtGoal = current_ && distance(current_->chain.end(), goal) <= config_.goalToleranceM;
+  const bool running = start.leftOnCurrent > 0.0;
+  const bool refresh = !endsAtGoal && start.leftOnCurrent < config_.refreshDistanceM &&
+                       state.stamp - lastPlan_ >= kRefreshPeriodS;
+  const bool newTargets = targetsChanged_ && (!running || state.stamp - lastPlan_ >= config_.replanPeriodS);
+  if (currentFree && running && !refresh && !newTargets) return {AvoidanceAction::Keep, std::nullopt, "chain free"};
+  if (currentFree && endsAtGoal && !newTargets) return {AvoidanceAction::Keep, std::nullopt, "arriving"};
+
+  auto best = bestCandidate(start, clearance);
+  if (!best) {
+    if (currentFree && running) return {AvoidanceAction::Keep, std::nullopt, "no better chain"};
+    return wait(state, start, currentFree && running);
+  }
+  waitingSince_.reset();
+  return send(state, std::move(best->timed), AvoidanceAction::Drive, currentFree ? "replanned" : "obstacle on the chain");
+}
+
+}  // namespace rgnav
