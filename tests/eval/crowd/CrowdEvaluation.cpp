@@ -1,0 +1,96 @@
+// The crowd evaluation's options, preparation and summary (see CrowdEvaluation.h).
+#include "tests/eval/crowd/CrowdEvaluation.h"
+
+#include <cstdio>
+#include <filesystem>
+#include <iostream>
+#include <sstream>
+
+#include "clientlibs/common/ModuleClient.h"
+#include "core/common/AtomicFile.h"
+#include "core/rgmap/kernel/RgMapCodec.h"
+#include "tests/eval/crowd/OfficeRgMap.h"
+
+namespace po = boost::program_options;
+
+namespace rgnav {
+namespace {
+
+Pose2D parsePose(const std::string& text) {
+  Pose2D pose;
+  char c1 = 0, c2 = 0;
+  std::istringstream in(text);
+  if (!(in >> pose.x >> c1 >> pose.y >> c2 >> pose.theta) || c1 != ',' || c2 != ',')
+    throw ConfigError("--start wants x,y,theta (metres, metres, radians), not '" + text + "'");
+  return pose;
+}
+
+// The cached map if the cache holds one, else the map made now (and cached).
+RgMapState officeMap(const CrowdEvaluationOptions& o, const LoadedWorld& world) {
+  const std::string file = o.mapCache + "/rgmap.state";
+  const std::optional<std::string> text = readCheckpoint(file);
+  const std::optional<std::string> journal = readCheckpoint(file + ".scans");
+  if (text && journal) {
+    std::cerr << "crowd: the RG map from " << file << std::endl;
+    return deserializeRgMap(*text, *journal);
+  }
+  std::cerr << "crowd: mapping " << o.world << " along its room tour with true poses (once; cached in "
+            << o.mapCache << ")" << std::endl;
+  RgMapState map = mapWorldWithTruePoses(world, o.models);
+  writeKernelCheckpoint(map, o.mapCache);
+  return map;
+}
+
+std::uint64_t counter(const ModuleStatusInfo& status, const std::string& name) {
+  const auto found = status.counters.find(name);
+  if (found == status.counters.end())
+    throw NotAvailableError("the simulator's health has no counter " + name);
+  return found->second;
+}
+
+}  // namespace
+
+void CrowdEvaluationOptions::addTo(po::options_description& d) {
+  d.add_options()
+      ("world", po::value(&world)->default_value(world), "world with ground-truth rooms")
+      ("sim-config", po::value(&simConfig)->default_value(simConfig), "simulator parameters")
+      ("models", po::value(&models)->default_value(models), "gateway HMMs for mapping the world")
+      ("map-cache", po::value(&mapCache)->default_value(mapCache), "folder of the world's RG map checkpoint (made if missing)")
+      ("start", po::value(&start)->default_value(start), "robot start x,y,theta")
+      ("people", po::value(&people)->default_value(people), "people walking in the world")
+      ("goals", po::value(&goals.count)->default_value(goals.count), "goals to drive")
+      ("seed", po::value(&goals.seed)->default_value(goals.seed), "seed of the goals and the people")
+      ("clearance", po::value(&goals.clearanceM)->default_value(goals.clearanceM), "goals this far from obstacles, m")
+      ("spacing", po::value(&goals.minSpacingM)->default_value(goals.minSpacingM), "goals this far apart, m")
+      ("tolerance", po::value(&run.toleranceM)->default_value(run.toleranceM), "reached: true pose this near, m")
+      ("goal-timeout", po::value(&run.goalTimeoutS)->default_value(run.goalTimeoutS), "seconds per goal");
+}
+
+PreparedCrowd prepareCrowd(const CrowdEvaluationOptions& o) {
+  PreparedCrowd p{loadWorld(o.world), parsePose(o.start), {}, {}};
+  if (!p.world.truth) throw ConfigError(o.world + ": no ground-truth rooms to put goals in");
+  p.map = officeMap(o, p.world);
+  p.goals = crowdGoals(p.world.grid, *p.world.truth, p.start, o.goals);
+  return p;
+}
+
+CrowdSetOptions crowdSetOptions(const CrowdEvaluationOptions& o, const PreparedCrowd& p) {
+  return {std::filesystem::absolute(o.world).string(), std::filesystem::absolute(o.simConfig).string(), p.start,
+          o.people, o.goals.seed};
+}
+
+SimulatorCounters simulatorCounters(const ClientSettings& settings) {
+  ModuleClient simulator("Laser", settings);
+  const ModuleStatusInfo status = simulator.status();
+  return {counter(status, "robot_collisions"), counter(status, "person_bumps")};
+}
+
+std::string crowdLine(const CrowdOutcome& outcome, const SimulatorCounters& counters) {
+  char line[256];
+  std::snprintf(line, sizeof line, "crowd: goals=%zu reached=%zu robot_collisions=%llu person_bumps=%llu mean_speed_mps=%.3f",
+                outcome.goals.size(), outcome.reached(), static_cast<unsigned long long>(counters.robotCollisions),
+                static_cast<unsigned long long>(counters.personBumps), outcome.meanSpeedMps());
+  return line;
+}
+
+}  // namespace rgnav

@@ -1,0 +1,29 @@
+// CrowdGoals: the goals of the crowd evaluation: seeded points in the rooms of a world's ground
+// truth, each on a free cell at least `clearanceM` from every wall and piece of furniture (so the
+// robot fits there with room to turn), in a room other than the previous goal's and at least
+// `minSpacingM` from the previous goal (and the first from the start), so every goal is a real
+// drive through doors and hallways.
+#pragma once
+
+#include <Eigen/Core>
+#include <cstdint>
+#include <vector>
+
+#include "core/common/Pose2D.h"
+#include "core/raster/OccupancyGrid.h"
+#include "core/sim/GroundTruth.h"
+
+namespace rgnav {
+
+struct CrowdGoalOptions {
+  int count = 20;
+  std::uint64_t seed = 1;
+  double clearanceM = 0.7;
+  double minSpacingM = 5.0;
+};
+
+// Throws InvalidArgumentError when the world has no cell that qualifies.
+std::vector<Eigen::Vector2d> crowdGoals(const OccupancyGrid& grid, const GroundTruth& truth, const Pose2D& start,
+                                        const CrowdGoalOptions& options);
+
+}  // namespace rgnav
