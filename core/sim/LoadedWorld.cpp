@@ -35,13 +35,16 @@ LoadedWorld loadWorld(const std::string& path) {
     } catch (const YAML::Exception& e) {
       throw FormatError(path, e.mark.line + 1, e.what());
     }
-    if (document.IsMap() && document["image"]) return {loadMapServerYaml(path), std::nullopt};
+    if (document.IsMap() && document["image"]) {
+      MapServerWorld map = loadMapServerWorld(path);
+      return {std::move(map.grid), std::nullopt, std::move(map.task)};
+    }
     const VectorWorld world = loadVectorWorld(path);
     OccupancyGrid grid = rasterize(world);
     GroundTruth truth = groundTruthOf(world, grid);
-    return {std::move(grid), std::move(truth)};
+    return {std::move(grid), std::move(truth), std::nullopt};
   }
-  LoadedWorld loaded{loadFloorPlan(path), std::nullopt};
+  LoadedWorld loaded{loadFloorPlan(path), std::nullopt, std::nullopt};
   const IpaFiles ipa = ipaFilesOf(path);
   if (fs::exists(ipa.truth) && fs::exists(ipa.empty)) loaded.truth = loadIpaGroundTruth(ipa.truth, ipa.empty, loaded.grid);
   return loaded;

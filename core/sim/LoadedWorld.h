@@ -2,7 +2,8 @@
 // truth where the world has one:
 //   - an occupancy image (PNG/PGM floor plan, 0.05 m/px, gray >= 250 free); an IPA floor plan
 //     X.png or X_furnitures.png gets its rooms and doors from X_gt_segmentation.png beside it;
-//   - a ROS map_server YAML (has an `image` key);
+//   - a ROS map_server YAML (has an `image` key), with a navigation task if it has `start` and
+//     `goal` keys (NavigationTask.h: the BARN worlds);
 //   - a vector world YAML (walls, doors, furniture, 3D rectangles, rooms).
 #pragma once
 
@@ -11,12 +12,14 @@
 
 #include "core/raster/OccupancyGrid.h"
 #include "core/sim/GroundTruth.h"
+#include "core/sim/world/NavigationTask.h"
 
 namespace rgnav {
 
 struct LoadedWorld {
   OccupancyGrid grid;
   std::optional<GroundTruth> truth;
+  std::optional<NavigationTask> task;
 };
 
 // The files an IPA-format floor plan comes with (same folder, named after the base map X).

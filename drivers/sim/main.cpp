@@ -51,7 +51,7 @@ int main(int argc, char** argv) {
       ("seed", po::value(&seed)->default_value(-1), "overrides the configured seed")
       ("clock", po::value(&clock)->default_value("realtime"), "realtime or lockstep")
       ("tour", po::bool_switch(&tour), "drive a tour through every ground-truth room (else: follow setVelocity)")
-      ("start", po::value(&start)->default_value(""), "x,y,theta; default: the free cell farthest from walls")
+      ("start", po::value(&start)->default_value(""), "x,y,theta; default: the world's task start, else the free cell farthest from walls")
       ("record", po::value(&record)->default_value(""), "write the run as a CARMEN log")
       ("buffer", po::value(&buffer)->default_value(20000), "scans and odometry readings held for consumers")
       ("max-batch", po::value(&maxBatch)->default_value(500), "most records one call returns")
@@ -65,7 +65,7 @@ int main(int argc, char** argv) {
     SimulationConfig simulation = config.empty() ? SimulationConfig{} : loadSimulationConfig(config);
     if (seed >= 0) simulation.seed = static_cast<std::uint64_t>(seed);
     LoadedWorld loaded = loadWorld(world);
-    const Pose2D startPose = start.empty() ? openestPose(loaded.grid) : parsePose(start);
+    const Pose2D startPose = !start.empty() ? parsePose(start) : loaded.task ? loaded.task->start : openestPose(loaded.grid);
     std::optional<Tour> route;
     if (tour) {
       if (!loaded.truth) throw ConfigError(world + ": --tour needs ground-truth rooms, and this world has none");

@@ -5,6 +5,13 @@
 // odometry input (no new reading for odometryTimeout) and when it has no chain. A newer chain
 // replaces the current one at once (the Collision Avoidance plans it to continue from where the
 // reference will be at its startTime).
+// States: Idle (standing, no chain) -> setChain -> Tracking (the reference moves along the chain
+// on the odometry clock; feed-forward speeds are the reference's mean over the next tick, as the
+// base holds a command for one tick) -> Settling (the reference stands at the chain's end; the
+// robot creeps onto the end pose until within 1 cm and 0.5 deg at rest, or for at most 3 s) ->
+// Idle with chainFinished. Odometry loss or stop(): Braking (the chain is dropped; speeds fall
+// along the current curvature at the deceleration limits) -> Idle. Every command keeps within
+// the MotionLimits, including their accelerations from the previous command.
 #pragma once
 
 #include <cstdint>
@@ -57,6 +64,12 @@ class LowLevelDrive {
   DriveStatus status() const;
 
  private:
+  VelocityCommand track(const OdometryReading& reading);
+  VelocityCommand settle(const OdometryReading& reading, double wallSeconds);
+  VelocityCommand brake() const;
+  VelocityCommand rateLimited(const VelocityCommand& wanted) const;
+  void dropChain(DriveState next);
+
   LowLevelDriveConfig config_;
   PostureController controller_;
   std::optional<DriveChain> chain_;
@@ -65,6 +78,7 @@ class LowLevelDrive {
   VelocityCommand lastCommand_;
   std::optional<OdometryReading> lastReading_;
   double lastReadingWall_ = 0.0;
+  double settleStartWall_ = 0.0;
   DriveStatus status_;
 };
 

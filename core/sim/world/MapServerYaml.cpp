@@ -1,4 +1,4 @@
-// loadMapServerYaml: strict map_server YAML reading and trinary thresholding.
+// loadMapServerYaml: strict map_server YAML reading, trinary thresholding and the task keys.
 #include "core/sim/world/MapServerYaml.h"
 
 #include "core/raster/ImageGrid.h"
@@ -28,9 +28,10 @@ GrayToCell trinaryTable(bool negate, double occupiedThreshold, double freeThresh
 
 }  // namespace
 
-OccupancyGrid loadMapServerYaml(const std::string& yamlPath) {
+MapServerWorld loadMapServerWorld(const std::string& yamlPath) {
   return parseYamlFile(yamlPath, [&](const ConfigNode& root) {
-    root.expectKeys({"image", "resolution", "origin", "negate", "occupied_thresh", "free_thresh", "mode"});
+    root.expectKeys({"image", "resolution", "origin", "negate", "occupied_thresh", "free_thresh", "mode", "start", "goal",
+                     "reference_path_length_m", "cylinders"});
     const double resolution = readPositive(root["resolution"]);
     const Eigen::Vector3d origin = readPoint3(root["origin"]);
     if (origin.z() != 0.0) root["origin"].fail("a rotated map (yaw != 0) is not supported");
@@ -42,9 +43,14 @@ OccupancyGrid loadMapServerYaml(const std::string& yamlPath) {
       root["mode"].fail("only mode trinary is supported");
     }
     const cv::Mat image = readReferencedImage(yamlPath, root["image"]);
-    return gridFromImage(image, resolution, {origin.x(), origin.y()},
-                         trinaryTable(negate, occupiedThreshold, freeThreshold));
+    MapServerWorld world{gridFromImage(image, resolution, {origin.x(), origin.y()},
+                                       trinaryTable(negate, occupiedThreshold, freeThreshold)),
+                         std::nullopt};
+    world.task = readNavigationTask(root, world.grid);
+    return world;
   });
 }
+
+OccupancyGrid loadMapServerYaml(const std::string& yamlPath) { return loadMapServerWorld(yamlPath).grid; }
 
 }  // namespace rgnav

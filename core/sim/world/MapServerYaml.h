@@ -10,16 +10,26 @@
 //   free_thresh: 0.196        # required, in [0, 1], below occupied_thresh
 //   negate: 0                 # optional, 0/1 or true/false
 //   mode: trinary             # optional; trinary is the only mode supported
+// plus the optional keys of a navigation task (start, goal, ...: NavigationTask.h).
 #pragma once
 
+#include <optional>
 #include <string>
 
 #include "core/raster/OccupancyGrid.h"
+#include "core/sim/world/NavigationTask.h"
 
 namespace rgnav {
 
+struct MapServerWorld {
+  OccupancyGrid grid;
+  std::optional<NavigationTask> task;
+};
+
 // Unknown or missing keys and bad values are ConfigErrors naming the file and key; a missing
 // image a FileError naming the YAML file and the image path; a bad image a FormatError.
+MapServerWorld loadMapServerWorld(const std::string& yamlPath);
+// The map alone (the task keys are checked all the same).
 OccupancyGrid loadMapServerYaml(const std::string& yamlPath);
 
 }  // namespace rgnav

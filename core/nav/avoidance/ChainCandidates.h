@@ -1,0 +1,37 @@
+// ChainCandidates: the chains of trajectory segments the Collision Avoidance chooses among
+// (thesis 5.5.3: "generate consecutive trajectory segments given the target poses"): from the
+// start state, the smooth chain through the next targets (pose joins of core/nav/motion), the same
+// with the first target shifted sideways by a few steps either way (deviations that join back to
+// the path), and a fan of arcs of different curvature (ways out when the targets are blocked).
+// Every chain ends where the robot is to stand: the caller times it to a standstill.
+#pragma once
+
+#include <span>
+#include <vector>
+
+#include "core/nav/avoidance/CollisionAvoidanceConfig.h"
+#include "core/nav/motion/TrajectoryChain.h"
+
+namespace rgnav {
+
+struct ChainStart {
+  Pose2D pose;
+  double speed = 0.0;      // m/s
+  double curvature = 0.0;  // 1/m
+};
+
+struct Candidate {
+  enum class Kind { Path, Deviation, Arc };
+  Kind kind = Kind::Path;
+  TrajectoryChain chain;
+};
+
+// `targets`: the targets still ahead (the next first), at least one.
+std::vector<Candidate> candidateChains(const ChainStart& start, std::span<const Pose2D> targets,
+                                       const CandidateConfig& config);
+
+// The part of `chain` between arc lengths `from` and `to` (clamped to the chain; empty if not
+// from < to).
+TrajectoryChain sliceChain(const TrajectoryChain& chain, double from, double to);
+
+}  // namespace rgnav

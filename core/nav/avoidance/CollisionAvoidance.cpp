@@ -1,0 +1,186 @@
+// The Collision Avoidance's decisions (see CollisionAvoidance.h).
+#include "core/nav/avoidance/CollisionAvoidance.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "core/nav/avoidance/ObstacleFusion.h"
+
+namespace rgnav {
+
+namespace {
+
+// The reference of the current chain is trusted as the next chain's start only while the robot
+// tracks it this closely; otherwise the next chain starts at the robot, from a standstill.
+constexpr double kMaxTrackingErrorM = 0.3;
+// A robot slower than this stands.
+constexpr double kStandingSpeed = 0.02;
+// Chains cut short before an obstacle must still be this long to be worth driving.
+constexpr double kMinChainM = 0.15;
+// What cutting a chain short costs: a chain that reaches its end beats one that stops early.
+constexpr double kCutPenaltyS = 2.0;
+
+double distance(const Pose2D& a, const Pose2D& b) { return std::hypot(a.x - b.x, a.y - b.y); }
+
+}  // namespace
+
+std::string toString(AvoidanceAction action) {
+  switch (action) {
+    case AvoidanceAction::Keep: return "keep";
+    case AvoidanceAction::Drive: return "drive";
+    case AvoidanceAction::Wait: return "wait";
+    case AvoidanceAction::Blocked: return "blocked";
+    case AvoidanceAction::GoalReached: return "goal-reached";
+  }
+  return "unknown";
+}
+
+CollisionAvoidance::CollisionAvoidance(const CollisionAvoidanceConfig& config, const Footprint& footprint,
+                                       const MotionLimits& limits)
+    : config_(config), footprint_(footprint), limits_(limits) {
+  validate(config);
+  validate(footprint);
+  validate(limits);
+}
+
+void CollisionAvoidance::setTargets(std::vector<Pose2D> targets) {
+  targets_ = std::move(targets);
+  targetsChanged_ = true;
+  waitingSince_.reset();
+}
+
+ChainStart CollisionAvoidance::chainStart(const RobotState& state) const {
+  if (current_ && currentTimed_) {
+    const double t = state.stamp + config_.planningLatencyS - current_->startTime;
+    if (t < currentTimed_->duration()) {
+      const ReferenceState ref = currentTimed_->stateAt(std::max(t, 0.0));
+      if (distance(ref.pose, state.pose) < kMaxTrackingErrorM)
+        return {ref.pose, ref.velocity, current_->chain.curvatureAt(ref.s)};
+    }
+  }
+  return {state.pose, 0.0, 0.0};
+}
+
+SweptCheckOptions CollisionAvoidance::checkOptions() const {
+  return {config_.safetyMarginM, config_.sampleStepM, config_.comfortClearanceM};
+}
+
+bool CollisionAvoidance::currentStillFree(const RobotState& state, const ObstacleClearance& clearance) const {
+  if (!current_ || !currentTimed_) return false;
+  const double t = std::max(0.0, state.stamp - current_->startTime);
+  const double s = currentTimed_->stateAt(t).s;
+  const TrajectoryChain rest = sliceChain(current_->chain, s, current_->chain.length());
+  return rest.empty() || checkSwept(clearance, rest, footprint_, checkOptions()).clear;
+}
+
+void CollisionAvoidance::dropPassedTargets(const Pose2D& from) {
+  const double c = std::cos(from.theta), s = std::sin(from.theta);
+  std::size_t passed = 0;
+  while (passed + 1 < targets_.size()) {
+    const Pose2D& t = targets_[passed];
+    const double d = distance(t, from);
+    const double ahead = (t.x - from.x) * c + (t.y - from.y) * s;
+    if (d >= config_.targetPassedM && (ahead >= 0.0 || d >= 2.0 * config_.targetPassedM)) break;
+    ++passed;
+  }
+  targets_.erase(targets_.begin(), targets_.begin() + static_cast<std::ptrdiff_t>(passed));
+}
+
+double CollisionAvoidance::pathLeftFrom(const Pose2D& end) const {
+  double best = std::numeric_limits<double>::infinity();
+  double after = 0.0;  // path length from target j to the goal
+  for (std::size_t j = targets_.size(); j-- > 0;) {
+    if (j + 1 < targets_.size()) after += distance(targets_[j], targets_[j + 1]);
+    best = std::min(best, distance(end, targets_[j]) + after);
+  }
+  return best;
+}
+
+std::optional<CollisionAvoidance::Scored> CollisionAvoidance::bestCandidate(const ChainStart& start,
+                                                                            const ObstacleClearance& clearance) const {
+  std::optional<Scored> best;
+  for (Candidate& candidate : candidateChains(start, targets_, config_.candidates)) {
+    const SweptCheck check = checkSwept(clearance, candidate.chain, footprint_, checkOptions());
+    double cost = 0.0;
+    if (!check.clear) {
+      if (check.freeLength < kMinChainM) continue;
+      candidate.chain = sliceChain(candidate.chain, 0.0, check.freeLength);
+      cost += kCutPenaltyS;
+    }
+    std::optional<TimedTrajectory> timed;
+    try {
+      timed.emplace(candidate.chain, limits_, start.speed, 0.0);
+    } catch (const InvalidArgumentError&) {
+      continue;  // cannot stop within it from the start speed
+    }
+    cost += timed->duration() + config_.progressWeightSPerM * pathLeftFrom(candidate.chain.end()) / limits_.maxVelocity +
+            config_.clearanceWeightSPerM *
+                std::max(0.0, config_.safetyMarginM + config_.comfortClearanceM - check.minClearance);
+    if (!best || cost < best->cost) best = Scored{std::move(candidate), std::move(*timed), cost};
+  }
+  return best;
+}
+
+std::optional<TrajectoryChain> CollisionAvoidance::brakingChain(const ChainStart& start) const {
+  if (start.speed < kStandingSpeed) return std::nullopt;
+  const double length = 1.1 * start.speed * start.speed / (2.0 * limits_.maxDeceleration) + 0.02;
+  return TrajectoryChain({TrajectorySegment{start.pose, length, start.curvature, 0.0}});
+}
+
+AvoidanceDecision CollisionAvoidance::send(const RobotState& state, const ChainStart& start, TrajectoryChain chain,
+                                           AvoidanceAction action, std::string reason) {
+  DriveChain drive{nextId_++, std::move(chain), start.speed, state.stamp + config_.planningLatencyS};
+  currentTimed_.emplace(drive.chain, limits_, drive.startSpeed, 0.0);
+  current_ = drive;
+  lastPlan_ = state.stamp;
+  targetsChanged_ = false;
+  return {action, std::move(drive), std::move(reason)};
+}
+
+AvoidanceDecision CollisionAvoidance::wait(const RobotState& state, const ChainStart& start, bool currentFree) {
+  if (!waitingSince_) waitingSince_ = state.stamp;
+  if (state.stamp - *waitingSince_ >= config_.blockedWaitS && std::abs(state.velocity) < kStandingSpeed) {
+    waitingSince_ = state.stamp;
+    return {AvoidanceAction::Blocked, std::nullopt, "no free chain for " + std::to_string(config_.blockedWaitS) + " s"};
+  }
+  if (!currentFree) {
+    if (auto braking = brakingChain(start)) {
+      try {
+        return send(state, start, std::move(*braking), AvoidanceAction::Wait, "no free chain: braking");
+      } catch (const InvalidArgumentError&) {
+        // the limits cannot time the braking arc: the Low-Level Drive brakes at the chain's end
+      }
+    }
+  }
+  return {AvoidanceAction::Wait, std::nullopt, "no free chain"};
+}
+
+AvoidanceDecision CollisionAvoidance::update(const RobotState& state, std::span<const ObstacleGrid> grids) {
+  if (targets_.empty()) return {AvoidanceAction::Keep, std::nullopt, "no targets"};
+  const Pose2D goal = targets_.back();
+  if (distance(state.pose, goal) <= config_.goalToleranceM && std::abs(state.velocity) < kStandingSpeed) {
+    targets_.clear();
+    current_.reset();
+    currentTimed_.reset();
+    return {AvoidanceAction::GoalReached, std::nullopt, "at the goal"};
+  }
+  const ObstacleClearance clearance(fuseObstacles(grids));
+  const ChainStart start = chainStart(state);
+  dropPassedTargets(start.pose);
+  const bool currentFree = currentStillFree(state, clearance);
+  const bool endsAtGoal = current_ && distance(current_->chain.end(), goal) <= config_.goalToleranceM;
+  const bool due = state.stamp - lastPlan_ >= config_.replanPeriodS && !endsAtGoal;
+  if (currentFree && !targetsChanged_ && !due) return {AvoidanceAction::Keep, std::nullopt, "chain free"};
+
+  const auto best = bestCandidate(start, clearance);
+  if (!best) {
+    if (currentFree) return {AvoidanceAction::Keep, std::nullopt, "no better chain"};
+    return wait(state, start, currentFree);
+  }
+  waitingSince_.reset();
+  return send(state, start, best->candidate.chain, AvoidanceAction::Drive,
+              currentFree ? "replanned" : "obstacle on the chain");
+}
+
+}  // namespace rgnav

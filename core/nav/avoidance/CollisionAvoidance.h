@@ -1,0 +1,99 @@
+// CollisionAvoidance: the Collision Avoidance Module's reasoning (thesis 5.5.3) without its
+// server. Given the planner's target poses (odometry frame, 0.5-2 m apart), the robot's state and
+// the obstacle grids, each update() decides:
+//   Keep        the chain being driven is still free (re-checked against every new grid);
+//   Drive       a new DriveChain: the best free candidate (ChainCandidates.h) scored by its
+//               predicted time, the path left from its end to the goal and its clearance; it
+//               starts where the reference of the current chain will be one planning latency
+//               from now (startTime on the odometry clock) and ends at a standstill in checked
+//               free space, so the robot stops safely if this module dies;
+//   Wait        no chain is free: stand (the decision may carry a chain that brakes), retry;
+//   Blocked     waited blockedWaitS without a free chain: the caller asks the planner for a new
+//               plan (thesis 5.4: a blocked door raises its edge's cost) and sets new targets;
+//   GoalReached standing within goalToleranceM of the last target.
+// Where no candidate is free to its end, the one that gets farthest is cut short before the
+// obstacle (and driven if the robot can still stop there): the robot closes in and sees more.
+// Deliberate differences to the thesis: no conic or elliptic segments (clothoids, arcs and
+// straights join every pair of poses), and moving obstacles are handled by re-checking at the
+// scan rate with a safety margin, not by predicting their motion.
+#pragma once
+
+#include <cstdint>
+#include <optional>
+#include <span>
+#include <string>
+#include <vector>
+
+#include "core/nav/avoidance/ChainCandidates.h"
+#include "core/nav/avoidance/CollisionAvoidanceConfig.h"
+#include "core/nav/avoidance/ObstacleGrid.h"
+#include "core/nav/avoidance/SweptFootprint.h"
+#include "core/nav/grid/Footprint.h"
+#include "core/nav/motion/DriveChain.h"
+#include "core/nav/motion/MotionLimits.h"
+#include "core/nav/motion/TimedTrajectory.h"
+
+namespace rgnav {
+
+struct RobotState {
+  Timestamp stamp = 0.0;  // odometry clock
+  Pose2D pose;            // odometry frame
+  double velocity = 0.0;    // m/s
+  double rotational = 0.0;  // rad/s
+};
+
+enum class AvoidanceAction { Keep, Drive, Wait, Blocked, GoalReached };
+std::string toString(AvoidanceAction action);
+
+struct AvoidanceDecision {
+  AvoidanceAction action = AvoidanceAction::Keep;
+  std::optional<DriveChain> chain;  // Drive; Wait when the robot must brake
+  std::string reason;
+};
+
+class CollisionAvoidance {
+ public:
+  // Throws ConfigError for a bad configuration, footprint or limits.
+  CollisionAvoidance(const CollisionAvoidanceConfig& config, const Footprint& footprint, const MotionLimits& limits);
+
+  // New targets (odometry frame; the goal last); an empty list stops at the current chain's end.
+  void setTargets(std::vector<Pose2D> targets);
+  const std::vector<Pose2D>& targets() const { return targets_; }
+
+  // One decision for the state and the grids (at least one grid).
+  AvoidanceDecision update(const RobotState& state, std::span<const ObstacleGrid> grids);
+
+  // The chain last sent (nullopt before the first or after the goal).
+  const std::optional<DriveChain>& currentChain() const { return current_; }
+
+ private:
+  struct Scored {
+    Candidate candidate;
+    TimedTrajectory timed;
+    double cost = 0.0;
+  };
+
+  ChainStart chainStart(const RobotState& state) const;
+  SweptCheckOptions checkOptions() const;
+  bool currentStillFree(const RobotState& state, const ObstacleClearance& clearance) const;
+  void dropPassedTargets(const Pose2D& from);
+  double pathLeftFrom(const Pose2D& end) const;
+  std::optional<Scored> bestCandidate(const ChainStart& start, const ObstacleClearance& clearance) const;
+  std::optional<TrajectoryChain> brakingChain(const ChainStart& start) const;
+  AvoidanceDecision send(const RobotState& state, const ChainStart& start, TrajectoryChain chain,
+                         AvoidanceAction action, std::string reason);
+  AvoidanceDecision wait(const RobotState& state, const ChainStart& start, bool currentFree);
+
+  CollisionAvoidanceConfig config_;
+  Footprint footprint_;
+  MotionLimits limits_;
+  std::vector<Pose2D> targets_;
+  bool targetsChanged_ = false;
+  std::optional<DriveChain> current_;
+  std::optional<TimedTrajectory> currentTimed_;
+  Timestamp lastPlan_ = 0.0;
+  std::optional<Timestamp> waitingSince_;
+  std::uint64_t nextId_ = 1;
+};
+
+}  // namespace rgnav

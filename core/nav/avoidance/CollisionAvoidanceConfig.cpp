@@ -1,0 +1,57 @@
+// Validation of the Collision Avoidance's parameters (see CollisionAvoidanceConfig.h).
+#include "core/nav/avoidance/CollisionAvoidanceConfig.h"
+
+#include <cmath>
+#include <string>
+
+#include "core/common/Errors.h"
+
+namespace rgnav {
+
+namespace {
+
+void positive(double value, const std::string& name) {
+  if (!(value > 0.0) || !std::isfinite(value)) throw ConfigError("collision avoidance: " + name + " must be positive");
+}
+
+void nonNegative(double value, const std::string& name) {
+  if (!(value >= 0.0) || !std::isfinite(value))
+    throw ConfigError("collision avoidance: " + name + " must not be negative");
+}
+
+}  // namespace
+
+void validate(const CandidateConfig& c) {
+  positive(c.horizonM, "candidates.horizon_m");
+  positive(c.lateralStepM, "candidates.lateral_step_m");
+  nonNegative(c.arcMaxCurvaturePerM, "candidates.arc_max_curvature_per_m");
+  positive(c.arcLengthM, "candidates.arc_length_m");
+}
+
+void validate(const GoalSeekingConfig& c) {
+  positive(c.replanPeriodS, "goal_seeking.replan_period_s");
+  nonNegative(c.inflationMarginM, "goal_seeking.inflation_margin_m");
+  positive(c.comfortClearanceM, "goal_seeking.comfort_clearance_m");
+  nonNegative(c.clearanceWeight, "goal_seeking.clearance_weight");
+  positive(c.targetMinSpacingM, "goal_seeking.target_min_spacing_m");
+  if (!(c.targetMaxSpacingM >= c.targetMinSpacingM))
+    throw ConfigError("collision avoidance: goal_seeking.target_max_spacing_m must not be below the minimum");
+}
+
+void validate(const CollisionAvoidanceConfig& c) {
+  validate(c.obstacleMap);
+  validate(c.candidates);
+  validate(c.goalSeeking);
+  nonNegative(c.safetyMarginM, "safety_margin_m");
+  positive(c.sampleStepM, "sample_step_m");
+  nonNegative(c.comfortClearanceM, "comfort_clearance_m");
+  nonNegative(c.clearanceWeightSPerM, "clearance_weight_s_per_m");
+  nonNegative(c.progressWeightSPerM, "progress_weight_s_per_m");
+  nonNegative(c.planningLatencyS, "planning_latency_s");
+  positive(c.replanPeriodS, "replan_period_s");
+  positive(c.targetPassedM, "target_passed_m");
+  positive(c.goalToleranceM, "goal_tolerance_m");
+  positive(c.blockedWaitS, "blocked_wait_s");
+}
+
+}  // namespace rgnav

@@ -1,0 +1,54 @@
+// CollisionAvoidanceConfig: the parameters of the Collision Avoidance (thesis 5.5.3): its laser
+// obstacle grid, the swept-footprint check's margin, the candidate chains it builds, when it
+// replans, waits and gives up, and the map-less goal seeking that feeds it targets where no map
+// exists (BARN, exploration). Read from YAML by CollisionAvoidanceConfigYaml.h
+// (config/modules/collisionavoidance.yaml); the robot's footprint and motion limits are the
+// robot's, not the module's, and come with the robot's configuration.
+#pragma once
+
+#include <cstddef>
+
+#include "core/nav/avoidance/LaserObstacleMap.h"
+
+namespace rgnav {
+
+struct CandidateConfig {
+  double horizonM = 5.0;            // a chain covers targets up to this far along them
+  double lateralStepM = 0.2;        // deviations: the next target shifted sideways by k * step
+  std::size_t lateralCount = 4;     // ... for k = 1..count on either side
+  double arcMaxCurvaturePerM = 2.0; // arc fans: curvatures spread over +-this
+  std::size_t arcCount = 9;         // ... this many arcs (odd: the straight is one)
+  double arcLengthM = 1.5;          // length of each arc before it stops
+};
+
+struct GoalSeekingConfig {
+  double replanPeriodS = 0.5;        // plan on the sensed grid this often (and when blocked)
+  double inflationMarginM = 0.05;    // the planner's disk: the footprint's inscribed radius + this
+  double comfortClearanceM = 0.6;    // paths closer to obstacles than this pay extra
+  double clearanceWeight = 4.0;      // extra cost per metre at the smallest clearance
+  double targetMinSpacingM = 0.5;
+  double targetMaxSpacingM = 1.5;
+};
+
+struct CollisionAvoidanceConfig {
+  LaserObstacleMapConfig obstacleMap;
+  CandidateConfig candidates;
+  GoalSeekingConfig goalSeeking;
+  double safetyMarginM = 0.05;          // the swept footprint keeps this from obstacles
+  double sampleStepM = 0.03;            // poses sampled along chains
+  double comfortClearanceM = 0.3;       // chains closer than margin + this pay extra
+  double clearanceWeightSPerM = 4.0;    // seconds of cost per metre of clearance below comfort
+  double progressWeightSPerM = 1.0;     // seconds of cost per metre left to the goal (over top speed)
+  double planningLatencyS = 0.1;        // a new chain starts this far ahead on the current one
+  double replanPeriodS = 0.3;           // replan at least this often while driving
+  double targetPassedM = 0.5;           // targets closer than this to the chain's start are passed
+  double goalToleranceM = 0.1;          // at the last target within this and standing: reached
+  double blockedWaitS = 3.0;            // no free chain for this long: blocked
+};
+
+// Each throws ConfigError naming the first bad value.
+void validate(const CandidateConfig& config);
+void validate(const GoalSeekingConfig& config);
+void validate(const CollisionAvoidanceConfig& config);
+
+}  // namespace rgnav

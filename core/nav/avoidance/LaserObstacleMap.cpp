@@ -1,0 +1,127 @@
+// The log-odds laser obstacle grid (see LaserObstacleMap.h).
+#include "core/nav/avoidance/LaserObstacleMap.h"
+
+#include <algorithm>
+#include <cmath>
+#include <opencv2/imgproc.hpp>
+#include <string>
+
+#include "core/common/Errors.h"
+
+namespace rgnav {
+
+namespace {
+constexpr std::uint8_t kPassed = 1;
+constexpr std::uint8_t kHit = 2;
+}  // namespace
+
+void validate(const LaserObstacleMapConfig& c) {
+  const auto positive = [](double v, const char* name) {
+    if (!(v > 0.0) || !std::isfinite(v)) throw ConfigError(std::string("laser obstacle map: ") + name + " must be positive");
+  };
+  positive(c.resolutionM, "resolution_m");
+  positive(c.sizeM, "size_m");
+  positive(c.maxClearRangeM, "max_clear_range_m");
+  positive(c.hitLogOdds, "hit_log_odds");
+  positive(c.clampLogOdds, "clamp_log_odds");
+  positive(c.occupiedLogOdds, "occupied_log_odds");
+  if (!(c.missLogOdds < 0.0)) throw ConfigError("laser obstacle map: miss_log_odds must be negative");
+  if (!(c.freeLogOdds < 0.0)) throw ConfigError("laser obstacle map: free_log_odds must be negative");
+  if (!(c.recenterMarginM >= 0.0) || c.recenterMarginM >= c.sizeM / 2.0)
+    throw ConfigError("laser obstacle map: recenter_margin_m must lie in [0, size_m / 2)");
+  if (!std::isfinite(c.laserForwardOffsetM)) throw ConfigError("laser obstacle map: laser_forward_offset_m must be finite");
+  if (c.occupiedLogOdds > c.clampLogOdds || -c.freeLogOdds > c.clampLogOdds)
+    throw ConfigError("laser obstacle map: the thresholds must lie within clamp_log_odds");
+}
+
+LaserObstacleMap::LaserObstacleMap(const LaserObstacleMapConfig& config) : config_((validate(config), config)) {
+  const int side = static_cast<int>(std::ceil(config.sizeM / config.resolutionM));
+  logOdds_ = cv::Mat::zeros(side, side, CV_32F);
+  mask_ = cv::Mat::zeros(side, side, CV_8U);
+}
+
+cv::Point LaserObstacleMap::cellOf(double x, double y) const {
+  return {static_cast<int>(std::floor((x - origin_.x) / config_.resolutionM)),
+          static_cast<int>(std::floor((y - origin_.y) / config_.resolutionM))};
+}
+
+void LaserObstacleMap::centreOn(WorldPoint p) {
+  const double half = logOdds_.cols * config_.resolutionM / 2.0;
+  if (!started_) {
+    origin_ = {p.x - half, p.y - half};
+    started_ = true;
+    return;
+  }
+  const double margin = config_.recenterMarginM;
+  const double size = logOdds_.cols * config_.resolutionM;
+  const double rx = p.x - origin_.x, ry = p.y - origin_.y;
+  if (rx >= margin && ry >= margin && rx <= size - margin && ry <= size - margin) return;
+  // Shift by whole cells so that kept cells keep their values exactly.
+  const int dx = static_cast<int>(std::lround((rx - half) / config_.resolutionM));
+  const int dy = static_cast<int>(std::lround((ry - half) / config_.resolutionM));
+  cv::Mat shifted = cv::Mat::zeros(logOdds_.size(), logOdds_.type());
+  const int n = logOdds_.cols;
+  const int w = n - std::abs(dx), h = n - std::abs(dy);
+  if (w > 0 && h > 0) {
+    const cv::Rect from(std::max(dx, 0), std::max(dy, 0), w, h);
+    const cv::Rect to(std::max(-dx, 0), std::max(-dy, 0), w, h);
+    logOdds_(from).copyTo(shifted(to));
+  }
+  logOdds_ = shifted;
+  origin_ = {origin_.x + dx * config_.resolutionM, origin_.y + dy * config_.resolutionM};
+}
+
+void LaserObstacleMap::add(const LaserScan& scan) {
+  const Pose2D laser = compose(scan.odometry, {config_.laserForwardOffsetM, 0.0, 0.0});
+  centreOn({laser.x, laser.y});
+  stamp_ = scan.stamp;
+  mask_.setTo(0);
+  const cv::Point from = cellOf(laser.x, laser.y);
+  const double clearRange = std::min(config_.maxClearRangeM, scan.maxRange > 0.0 ? scan.maxRange : config_.maxClearRangeM);
+  const cv::Rect inside(0, 0, mask_.cols, mask_.rows);
+  for (std::size_t i = 0; i < scan.ranges.size(); ++i) {
+    const float r = scan.ranges[i];
+    if (std::isnan(r)) continue;
+    const double angle = laser.theta + scan.startAngle + static_cast<double>(i) * scan.angleIncrement;
+    const double c = std::cos(angle), s = std::sin(angle);
+    const bool hit = std::isfinite(r) && r < clearRange;
+    // A beam clears up to one cell short of its end: a grazing beam must not erase the obstacle.
+    const double clear = hit ? std::max(0.0, r - config_.resolutionM) : clearRange;
+    cv::line(mask_, from, cellOf(laser.x + c * clear, laser.y + s * clear), cv::Scalar(kPassed));
+    if (hit) {
+      const cv::Point end = cellOf(laser.x + c * r, laser.y + s * r);
+      if (inside.contains(end)) mask_.at<std::uint8_t>(end) = kHit;
+    }
+  }
+  const auto hitOdds = static_cast<float>(config_.hitLogOdds);
+  const auto missOdds = static_cast<float>(config_.missLogOdds);
+  const auto clamp = static_cast<float>(config_.clampLogOdds);
+  for (int row = 0; row < mask_.rows; ++row) {
+    const auto* m = mask_.ptr<std::uint8_t>(row);
+    auto* l = logOdds_.ptr<float>(row);
+    for (int col = 0; col < mask_.cols; ++col) {
+      if (m[col] == 0) continue;
+      l[col] = std::clamp(l[col] + (m[col] == kHit ? hitOdds : missOdds), -clamp, clamp);
+    }
+  }
+}
+
+ObstacleGrid LaserObstacleMap::grid() const {
+  ObstacleGrid out;
+  out.source = "laser";
+  out.stamp = stamp_;
+  if (!started_) return out;
+  out.cells = OccupancyGrid(logOdds_.cols, logOdds_.rows, config_.resolutionM, origin_, Cell::Unknown);
+  const auto occupied = static_cast<float>(config_.occupiedLogOdds);
+  const auto free = static_cast<float>(config_.freeLogOdds);
+  for (int row = 0; row < logOdds_.rows; ++row) {
+    const auto* l = logOdds_.ptr<float>(row);
+    for (int col = 0; col < logOdds_.cols; ++col) {
+      if (l[col] > occupied) out.cells.set({col, row}, Cell::Occupied);
+      else if (l[col] < free) out.cells.set({col, row}, Cell::Free);
+    }
+  }
+  return out;
+}
+
+}  // namespace rgnav
