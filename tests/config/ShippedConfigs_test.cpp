@@ -13,6 +13,7 @@
 #include "core/config/DescribedConfig.h"
 #include "core/gateways/classify/HmmModelFile.h"
 #include "core/gateways/detection/GatewayDetectorConfigYaml.h"
+#include "core/nav/motion/LowLevelDriveConfigYaml.h"
 #include "core/nav/planning/RoutePlannerConfigYaml.h"
 #include "core/rgmap/kernel/RgMappingKernelConfigYaml.h"
 #include "core/sim/LoadedWorld.h"
@@ -46,7 +47,8 @@ const std::map<std::string, ModuleFile>& moduleFiles() {
       {"scanmapper", moduleFile(&parseSlamConfig)},
       {"gatewaydetection", moduleFile(&parseGatewayDetectorConfig)},
       {"rgmappingkernel", moduleFile(&parseRgMappingKernelConfig)},
-      {"pathplanning", moduleFile(&parseRoutePlannerConfig)}};
+      {"pathplanning", moduleFile(&parseRoutePlannerConfig)},
+      {"lowleveldrive", moduleFile(&parseLowLevelDriveConfig)}};
   return files;
 }
 
@@ -174,6 +176,9 @@ class ShippedConfigsTest : public CppUnit::TestFixture {
     CPPUNIT_ASSERT_THROW(
         parseRgMappingKernelConfig(replaced(shippedModuleText("rgmappingkernel"), "door_open_m: -30", "door_open_m: 1"),
                                    "k.yaml"),
+        ConfigError);
+    CPPUNIT_ASSERT_THROW(
+        parseLowLevelDriveConfig(replaced(shippedModuleText("lowleveldrive"), "kx_per_s: 2", "kx_per_s: 0"), "l.yaml"),
         ConfigError);
   }
 };

@@ -1,0 +1,78 @@
+// The LowLevelDrive module through the real server set (issue "Motion"): the simulator in real
+// time following velocity commands and the drive on its Base. A chain sent through the client
+// library (2 m straight, a clothoid into a left arc of 2 m radius) is driven to its end: the
+// simulator's ground truth ends within 5 cm and 3 degrees of the chain's end and stays there. The
+// same chain sent again (a retry) changes nothing; another chain under the same ID, one with an
+// ID not above the last and one the limits cannot drive are refused naming "chain".
+#include <cppunit/extensions/HelperMacros.h>
+
+#include <cmath>
+#include <cstdio>
+
+#include "tests/integration/MotionSet.h"
+
+using namespace rgnav;
+using namespace rgnav::testing;
+
+class LowLevelDriveIntegrationTest : public CppUnit::TestFixture {
+  CPPUNIT_TEST_SUITE(LowLevelDriveIntegrationTest);
+  CPPUNIT_TEST(drivesAChainToItsEnd);
+  CPPUNIT_TEST_SUITE_END();
+
+ public:
+  void drivesAChainToItsEnd() {
+    MotionSet set;
+    set.cluster().start();
+    LowLevelDriveClient& drive = set.drive();
+    const DriveReport idle = drive.driveStatus();
+    CPPUNIT_ASSERT(idle.drive.state == DriveState::Idle);
+    CPPUNIT_ASSERT_EQUAL(std::uint64_t(0), idle.commandsSent);  // an idle drive commands nothing
+    CPPUNIT_ASSERT_EQUAL(MotionLimits{}.maxVelocity, drive.limits().maxVelocity);
+
+    const DriveChain chain = straightThenArc(1, set.latestOdometry(), 2.0, 0.5, 0.5, 0.8);
+    drive.setChain(chain);
+    waitUntil([&] { return drive.driveStatus().drive.chainFinished; }, "the drive to finish its chain",
+              std::chrono::seconds(60), std::chrono::milliseconds(50));
+    const DriveReport done = drive.driveStatus();
+    CPPUNIT_ASSERT_EQUAL(std::uint64_t(1), done.drive.chainId);
+    CPPUNIT_ASSERT(done.commandsSent > 0);
+
+    // Standing: two scans 0.3 s of simulated time apart see the same true pose.
+    TrueState first = set.latestTruth();
+    waitUntil([&] { return set.latestTruth().stamp > first.stamp + 0.3; }, "the simulation to go on");
+    const TrueState still = set.latestTruth();
+    const Pose2D end = chain.chain.end();
+    const double positionError = std::hypot(still.pose.x - end.x, still.pose.y - end.y);
+    const double yawErrorDeg = std::abs(normalizeAngle(still.pose.theta - end.theta)) * 180.0 / M_PI;
+    std::printf("\nchain of %.2f m driven: true end %.4f m / %.2f deg from the chain's end, lateral error %.4f m, "
+                "%llu commands, loop period p99 %.1f ms\n",
+                chain.chain.length(), positionError, yawErrorDeg, done.drive.lateralError,
+                static_cast<unsigned long long>(done.commandsSent), done.loopPeriodP99Seconds * 1000.0);
+    CPPUNIT_ASSERT(positionError < 0.05);
+    CPPUNIT_ASSERT(yawErrorDeg < 3.0);
+    CPPUNIT_ASSERT_DOUBLES_EQUAL(first.pose.x, still.pose.x, 1e-6);
+    CPPUNIT_ASSERT_DOUBLES_EQUAL(first.pose.y, still.pose.y, 1e-6);
+
+    // A retry of the chain accepted last changes nothing: it is not driven again.
+    drive.setChain(chain);
+    CPPUNIT_ASSERT(drive.driveStatus().drive.chainFinished);
+    expectRefused(drive, straightThenArc(1, set.latestOdometry(), 1.0, 0.5, 0.5, 0.8));  // same ID, other chain
+    DriveChain tooFast = straightThenArc(2, set.latestOdometry(), 1.0, 0.5, 0.5, 0.8);
+    tooFast.startSpeed = 5.0;  // above the limits, and it could not brake within the chain
+    expectRefused(drive, tooFast);
+    drive.setChain(straightThenArc(5, set.latestOdometry(), 0.3, 0.3, -0.5, 0.3));
+    CPPUNIT_ASSERT_EQUAL(std::uint64_t(5), drive.driveStatus().drive.chainId);
+    expectRefused(drive, straightThenArc(4, set.latestOdometry(), 1.0, 0.5, 0.5, 0.8));  // not above the last
+  }
+
+ private:
+  static void expectRefused(LowLevelDriveClient& drive, const DriveChain& chain) {
+    try {
+      drive.setChain(chain);
+      CPPUNIT_FAIL("chain " + std::to_string(chain.id) + " was accepted");
+    } catch (const BadArgumentError& e) {
+      CPPUNIT_ASSERT_EQUAL(std::string("chain"), e.field());
+    }
+  }
+};
+CPPUNIT_TEST_SUITE_REGISTRATION(LowLevelDriveIntegrationTest);
