@@ -13,18 +13,6 @@ namespace {
 constexpr std::uint64_t kOdometryStream = 0x9e3779b97f4a7c15ULL;
 constexpr std::uint64_t kLaserStream = 0xbf58476d1ce4e5b9ULL;
 
-bool diskIsFree(const OccupancyGrid& world, const Pose2D& pose, double radius) {
-  const int reach = static_cast<int>(std::ceil(radius / world.resolution()));
-  const auto centre = world.cellOf({pose.x, pose.y});
-  if (!centre) return false;
-  for (int dr = -reach; dr <= reach; ++dr)
-    for (int dc = -reach; dc <= reach; ++dc) {
-      const CellIndex c{centre->col + dc, centre->row + dr};
-      const WorldPoint p = world.center(c);
-      if (std::hypot(p.x - pose.x, p.y - pose.y) <= radius && world.blocked(c)) return false;
-    }
-  return true;
-}
 }  // namespace
 
 void validate(const SimulationConfig& config) {
@@ -44,7 +32,7 @@ Simulation::Simulation(const OccupancyGrid& world, const SimulationConfig& confi
       laserRng_(config.seed ^ kLaserStream),
       odometryPose_(start),
       time_(startTime) {
-  if (!diskIsFree(world, start, config.robot.radius))
+  if (robot_.collidesAt(start, world_))
     throw InvalidArgumentError("simulation: the start pose (" + std::to_string(start.x) + ", " +
                                std::to_string(start.y) + ") is not free for the robot");
 }

@@ -41,7 +41,7 @@ struct SimulationStep {
 class Simulation {
  public:
   // Keeps a reference to `world`, which must outlive the simulation. Throws InvalidArgumentError
-  // if the start pose is not free for the robot's disk.
+  // if the robot's footprint at the start pose overlaps a blocked cell.
   Simulation(const OccupancyGrid& world, const SimulationConfig& config, const Pose2D& start, Timestamp startTime = 0.0);
 
   // Target velocities, held until the next command.

@@ -20,10 +20,35 @@ void read(const ConfigNode& node, const std::string& key, double& target, double
   if (node.has(key)) target = node[key].asDouble() * scale;
 }
 
+Footprint readFootprint(const ConfigNode& node) {
+  node.expectKeys({"shape", "radius_m", "length_m", "width_m", "center_offset_m"});
+  const std::string shape = node["shape"].asString();
+  Footprint footprint;
+  if (shape == "disk") {
+    if (node.has("length_m") || node.has("width_m") || node.has("center_offset_m"))
+      node.fail("a disk has radius_m only");
+    footprint = Footprint::disk(node["radius_m"].asDouble());
+  } else if (shape == "rectangle") {
+    if (node.has("radius_m")) node.fail("a rectangle has length_m, width_m and center_offset_m, not radius_m");
+    footprint = Footprint::rectangle(node["length_m"].asDouble(), node["width_m"].asDouble());
+    read(node, "center_offset_m", footprint.centerOffset);
+  } else {
+    node["shape"].fail("is disk or rectangle, not '" + shape + "'");
+  }
+  try {
+    validate(footprint);
+  } catch (const ConfigError& e) {
+    node.fail(e.what());
+  }
+  return footprint;
+}
+
 void readRobot(const ConfigNode& node, DiffDriveConfig& robot) {
-  node.expectKeys({"radius_m", "max_velocity_mps", "max_rotation_radps", "max_acceleration_mps2",
+  node.expectKeys({"radius_m", "footprint", "max_velocity_mps", "max_rotation_radps", "max_acceleration_mps2",
                    "max_rotation_acceleration_radps2"});
-  read(node, "radius_m", robot.radius);
+  if (node.has("radius_m") && node.has("footprint")) node.fail("give radius_m (a disk) or footprint, not both");
+  if (node.has("radius_m")) robot.footprint = Footprint::disk(node["radius_m"].asDouble());
+  if (node.has("footprint")) robot.footprint = readFootprint(node["footprint"]);
   read(node, "max_velocity_mps", robot.maxTranslationalVelocity);
   read(node, "max_rotation_radps", robot.maxRotationalVelocity);
   read(node, "max_acceleration_mps2", robot.maxTranslationalAcceleration);

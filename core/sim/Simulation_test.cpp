@@ -30,7 +30,7 @@ LoadedWorld twoRooms() {
       else if (col < 98 || col >= 102) truth.labels[static_cast<std::size_t>(row * 200 + col)] = col < 98 ? 0 : 1;
     }
   truth.doors.push_back(DoorLine{{5.0, 2.5}, {5.0, 3.5}, 0, 1});
-  return {std::move(grid), std::move(truth)};
+  return {std::move(grid), std::move(truth), std::nullopt};
 }
 
 // The CARMEN log of `steps` steps driving a fixed arc.

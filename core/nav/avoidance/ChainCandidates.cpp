@@ -3,6 +3,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
+
+#include "core/nav/motion/PoseJoins.h"
 
 namespace rgnav {
 
@@ -11,7 +14,63 @@ namespace {
 // Joins below this length are left out (the targets coincide).
 constexpr double kMinJoinM = 1e-3;
 
+TurnShape shapeOf(const CandidateConfig& config) {
+  return {config.turnMaxCurvaturePerM, config.turnSharpnessPerM2, config.turnMaxSharpnessPerM2};
+}
+
+// The targets up to the first that lies horizonM or farther along the polyline from `start`.
+std::vector<Pose2D> withinHorizon(const Pose2D& start, std::span<const Pose2D> targets, double horizonM) {
+  std::vector<Pose2D> out;
+  double along = 0.0;
+  Pose2D previous = start;
+  for (const Pose2D& target : targets) {
+    along += std::hypot(target.x - previous.x, target.y - previous.y);
+    out.push_back(target);
+    if (along >= horizonM) break;
+    previous = target;
+  }
+  return out;
+}
+
+// Turn by `deflection`, then straight on to `length` in all.
+std::optional<TrajectoryChain> fanChain(const Pose2D& start, double deflection, double length, const TurnShape& shape) {
+  TrajectoryChain chain(symmetricTurn(start, deflection, shape));
+  const double rest = length - chain.length();
+  if (rest > kMinJoinM) chain.append(TrajectorySegment{chain.empty() ? start : chain.end(), rest, 0.0, 0.0});
+  if (chain.empty()) return std::nullopt;
+  return chain;
+}
+
 }  // namespace
+
+std::vector<Candidate> candidateChains(const ChainStart& start, std::span<const Pose2D> targets,
+                                       const CandidateConfig& config) {
+  std::vector<Candidate> out;
+  if (targets.empty()) return out;
+  const TurnShape shape = shapeOf(config);
+  const std::vector<Pose2D> ahead = withinHorizon(start.pose, targets, config.horizonM);
+  if (auto chain = smoothPolyline(start.pose, ahead, shape)) out.push_back({Candidate::Kind::Path, std::move(*chain)});
+  // Deviations: the first target shifted across the line from the start to it.
+  const Pose2D& first = ahead.front();
+  const double across = std::atan2(first.y - start.pose.y, first.x - start.pose.x) + M_PI / 2.0;
+  for (std::size_t k = 1; k <= config.lateralCount; ++k)
+    for (const double side : {1.0, -1.0}) {
+      const double offset = side * static_cast<double>(k) * config.lateralStepM;
+      std::vector<Pose2D> shifted = ahead;
+      shifted.front().x += offset * std::cos(across);
+      shifted.front().y += offset * std::sin(across);
+      if (auto chain = smoothPolyline(start.pose, shifted, shape))
+        out.push_back({Candidate::Kind::Deviation, std::move(*chain)});
+    }
+  for (std::size_t i = 0; i < config.fanCount; ++i) {
+    const double deflection =
+        config.fanCount == 1 ? 0.0
+                             : config.fanMaxDeflectionRad * (2.0 * static_cast<double>(i) / static_cast<double>(config.fanCount - 1) - 1.0);
+    if (auto chain = fanChain(start.pose, deflection, config.fanLengthM, shape))
+      out.push_back({Candidate::Kind::Fan, std::move(*chain)});
+  }
+  return out;
+}
 
 TrajectoryChain sliceChain(const TrajectoryChain& chain, double from, double to) {
   from = std::max(from, 0.0);

@@ -2,7 +2,9 @@
 // (thesis 5.5.3: "generate consecutive trajectory segments given the target poses"): from the
 // start state, the smooth chain through the next targets (pose joins of core/nav/motion), the same
 // with the first target shifted sideways by a few steps either way (deviations that join back to
-// the path), and a fan of arcs of different curvature (ways out when the targets are blocked).
+// the path), and a fan of turns by different angles, each followed by a straight (ways out when
+// the targets are blocked). All are curvature-continuous: straights and clothoid-arc-clothoid
+// turns, 0 curvature at both ends (the start state's curvature is not continued).
 // Every chain ends where the robot is to stand: the caller times it to a standstill.
 #pragma once
 
@@ -21,7 +23,7 @@ struct ChainStart {
 };
 
 struct Candidate {
-  enum class Kind { Path, Deviation, Arc };
+  enum class Kind { Path, Deviation, Fan };
   Kind kind = Kind::Path;
   TrajectoryChain chain;
 };

@@ -23,9 +23,14 @@ void nonNegative(double value, const std::string& name) {
 
 void validate(const CandidateConfig& c) {
   positive(c.horizonM, "candidates.horizon_m");
+  positive(c.turnMaxCurvaturePerM, "candidates.turn_max_curvature_per_m");
+  positive(c.turnSharpnessPerM2, "candidates.turn_sharpness_per_m2");
+  if (!(c.turnMaxSharpnessPerM2 >= c.turnSharpnessPerM2) || !std::isfinite(c.turnMaxSharpnessPerM2))
+    throw ConfigError("collision avoidance: candidates.turn_max_sharpness_per_m2 must not be below the sharpness");
   positive(c.lateralStepM, "candidates.lateral_step_m");
-  nonNegative(c.arcMaxCurvaturePerM, "candidates.arc_max_curvature_per_m");
-  positive(c.arcLengthM, "candidates.arc_length_m");
+  if (!(c.fanMaxDeflectionRad >= 0.0) || !(c.fanMaxDeflectionRad < M_PI))
+    throw ConfigError("collision avoidance: candidates.fan_max_deflection_deg must lie in [0, 180)");
+  positive(c.fanLengthM, "candidates.fan_length_m");
 }
 
 void validate(const GoalSeekingConfig& c) {

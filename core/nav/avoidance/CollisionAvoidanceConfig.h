@@ -13,12 +13,15 @@
 namespace rgnav {
 
 struct CandidateConfig {
-  double horizonM = 5.0;            // a chain covers targets up to this far along them
-  double lateralStepM = 0.2;        // deviations: the next target shifted sideways by k * step
-  std::size_t lateralCount = 4;     // ... for k = 1..count on either side
-  double arcMaxCurvaturePerM = 2.0; // arc fans: curvatures spread over +-this
-  std::size_t arcCount = 9;         // ... this many arcs (odd: the straight is one)
-  double arcLengthM = 1.5;          // length of each arc before it stops
+  double horizonM = 5.0;             // a chain covers targets up to this far along them
+  double turnMaxCurvaturePerM = 3.0; // the turns of the joins (PoseJoins.h TurnShape)
+  double turnSharpnessPerM2 = 6.0;
+  double turnMaxSharpnessPerM2 = 40.0;
+  double lateralStepM = 0.2;         // deviations: the next target shifted sideways by k * step
+  std::size_t lateralCount = 4;      // ... for k = 1..count on either side
+  double fanMaxDeflectionRad = 1.2;  // fan: turn by up to +-this, then straight on
+  std::size_t fanCount = 9;          // ... this many chains (odd: straight ahead is one)
+  double fanLengthM = 1.5;           // length of each fan chain
 };
 
 struct GoalSeekingConfig {

@@ -27,11 +27,14 @@ void describe(V& v, LaserObstacleMapConfig& c) {
 template <class V>
 void describe(V& v, CandidateConfig& c) {
   v.field("horizon_m", c.horizonM);
+  v.field("turn_max_curvature_per_m", c.turnMaxCurvaturePerM);
+  v.field("turn_sharpness_per_m2", c.turnSharpnessPerM2);
+  v.field("turn_max_sharpness_per_m2", c.turnMaxSharpnessPerM2);
   v.field("lateral_step_m", c.lateralStepM);
   v.field("lateral_count", c.lateralCount);
-  v.field("arc_max_curvature_per_m", c.arcMaxCurvaturePerM);
-  v.field("arc_count", c.arcCount);
-  v.field("arc_length_m", c.arcLengthM);
+  v.degrees("fan_max_deflection_deg", c.fanMaxDeflectionRad);
+  v.field("fan_count", c.fanCount);
+  v.field("fan_length_m", c.fanLengthM);
 }
 
 template <class V>

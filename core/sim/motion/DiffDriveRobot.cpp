@@ -6,7 +6,6 @@
 
 #include "core/common/Errors.h"
 #include "core/common/ValueChecks.h"
-#include "core/nav/grid/DiskFootprint.h"
 
 namespace rgnav {
 
@@ -32,7 +31,7 @@ double approach(double current, double target, double maxChange) {
 }  // namespace
 
 void validate(const DiffDriveConfig& config) {
-  requirePositive(config.radius, "robot radius");
+  validate(config.footprint);
   requirePositive(config.maxTranslationalVelocity, "maximum translational velocity");
   requirePositive(config.maxRotationalVelocity, "maximum rotational velocity");
   requirePositive(config.maxTranslationalAcceleration, "maximum translational acceleration");
@@ -53,7 +52,15 @@ void DiffDriveRobot::command(const VelocityCommand& target) {
                                   config_.maxRotationalVelocity);
 }
 
-StepOutcome DiffDriveRobot::step(double dt, const OccupancyGrid& grid) {
+bool DiffDriveRobot::collidesAt(const Pose2D& pose, const OccupancyGrid& grid,
+                                std::span<const DiskObstacle> obstacles) const {
+  if (config_.footprint.overlapsGrid(grid, pose)) return true;
+  return std::any_of(obstacles.begin(), obstacles.end(), [&](const DiskObstacle& o) {
+    return config_.footprint.overlapsDisk(pose, o.centre, o.radius);
+  });
+}
+
+StepOutcome DiffDriveRobot::step(double dt, const OccupancyGrid& grid, std::span<const DiskObstacle> obstacles) {
   if (!(std::isfinite(dt) && dt > 0.0)) {
     throw InvalidArgumentError("DiffDriveRobot: time step must be positive and finite");
   }
@@ -64,12 +71,14 @@ StepOutcome DiffDriveRobot::step(double dt, const OccupancyGrid& grid) {
   const double v = velocity_.translational;
   const double w = velocity_.rotational;
   const double spacing = grid.resolution() / 4.0;
-  const int samples = std::max(1, static_cast<int>(std::ceil(std::abs(v) * dt / spacing)));
+  // The farthest any footprint point travels: the centre's arc plus the turn at the circumradius.
+  const double travel = (std::abs(v) + std::abs(w) * config_.footprint.circumradius()) * dt;
+  const int samples = std::max(1, static_cast<int>(std::ceil(travel / spacing)));
   const Pose2D start = pose_;
   Pose2D lastFree = start;
   for (int k = 0; k <= samples; ++k) {
     const Pose2D p = k == 0 ? start : arc(start, v, w, dt * k / samples);
-    if (diskCollides(grid, {p.x, p.y}, config_.radius)) {
+    if (collidesAt(p, grid, obstacles)) {
       pose_ = lastFree;
       velocity_ = {};
       target_ = {};

@@ -1,5 +1,6 @@
 // Tests the simulated base: straight driving under acceleration limits, exact arcs, velocity
-// limits, the disk footprint, and stopping at the last free pose on a collision.
+// limits, the disk footprint, stopping at the last free pose on a collision, the rectangle
+// footprint (its front, its corners when turning on the spot) and round obstacles (people).
 #include <cppunit/extensions/HelperMacros.h>
 
 #include <cmath>
@@ -12,6 +13,8 @@
 using rgnav::Cell;
 using rgnav::DiffDriveConfig;
 using rgnav::DiffDriveRobot;
+using rgnav::DiskObstacle;
+using rgnav::Footprint;
 using rgnav::OccupancyGrid;
 using rgnav::StepOutcome;
 
@@ -44,6 +47,9 @@ class DiffDriveRobotTest : public CppUnit::TestFixture {
   CPPUNIT_TEST(commandsAreClampedToLimits);
   CPPUNIT_TEST(diskFootprintIsExact);
   CPPUNIT_TEST(collisionStopsAtLastFreePose);
+  CPPUNIT_TEST(rectangleStopsWithItsFrontAtTheWall);
+  CPPUNIT_TEST(rectangleCornersCollideWhenTurning);
+  CPPUNIT_TEST(roundObstaclesStopTheRobot);
   CPPUNIT_TEST(badInputIsTypedError);
   CPPUNIT_TEST_SUITE_END();
 
@@ -157,10 +163,65 @@ class DiffDriveRobotTest : public CppUnit::TestFixture {
     CPPUNIT_ASSERT(robot.pose().x < stopped.x);
   }
 
+  void rectangleStopsWithItsFrontAtTheWall() {
+    const OccupancyGrid grid = boxWorld();  // wall face at x = 3.8
+    DiffDriveConfig config;
+    config.footprint = Footprint::rectangle(0.508, 0.430, 0.05);  // front 0.304 m ahead
+    DiffDriveRobot robot(config, {2.0, 2.0, 0.0});
+    robot.command({1.0, 0.0});
+    int steps = 0;
+    while (robot.step(0.1, grid) == StepOutcome::Moved && steps < 1000) ++steps;
+    const double limit = 3.8 - 0.304;
+    CPPUNIT_ASSERT(robot.pose().x <= limit + 1e-9);
+    CPPUNIT_ASSERT(robot.pose().x >= limit - 0.05 / 4.0 - 1e-9);
+    CPPUNIT_ASSERT(!robot.collidesAt(robot.pose(), grid));
+    // Backwards the rear (0.204 m behind) meets the wall at x = 0.2.
+    robot.command({-1.0, 0.0});
+    while (robot.step(0.1, grid) == StepOutcome::Moved && steps < 2000) ++steps;
+    CPPUNIT_ASSERT(robot.pose().x >= 0.2 + 0.204 - 1e-9);
+    CPPUNIT_ASSERT(robot.pose().x <= 0.2 + 0.204 + 0.05 / 4.0 + 1e-9);
+  }
+
+  void rectangleCornersCollideWhenTurning() {
+    const OccupancyGrid grid = boxWorld();
+    DiffDriveConfig config = instantConfig();
+    config.footprint = Footprint::rectangle(0.508, 0.430);  // corners 0.333 m from the centre
+    // 0.3 m from the wall: free facing it, but the corners sweep 0.333 m out when turning. One
+    // long step turns by 1 rad at once: the check in between must find the corner.
+    DiffDriveRobot robot(config, {3.5, 2.0, 0.0});
+    CPPUNIT_ASSERT(!robot.collidesAt(robot.pose(), grid));
+    robot.command({0.0, 1.0});
+    CPPUNIT_ASSERT(robot.step(1.0, grid) == StepOutcome::Collided);
+    CPPUNIT_ASSERT(robot.pose().theta > 0.0 && robot.pose().theta < 0.6);
+    CPPUNIT_ASSERT(!robot.collidesAt(robot.pose(), grid));
+    // A disk robot of the rectangle's half width turns freely there.
+    DiffDriveConfig round = instantConfig();
+    round.footprint = Footprint::disk(0.215);
+    DiffDriveRobot disk(round, {3.5, 2.0, 0.0});
+    disk.command({0.0, 1.0});
+    CPPUNIT_ASSERT(disk.step(1.0, grid) == StepOutcome::Moved);
+  }
+
+  void roundObstaclesStopTheRobot() {
+    const OccupancyGrid grid = openWorld();
+    DiffDriveConfig config;
+    config.footprint = Footprint::rectangle(0.5, 0.4);
+    DiffDriveRobot robot(config, {0.0, 0.0, 0.0});
+    const DiskObstacle person{{2.0, 0.1}, 0.25};
+    robot.command({1.0, 0.0});
+    int steps = 0;
+    while (robot.step(0.1, grid, {&person, 1}) == StepOutcome::Moved && steps < 1000) ++steps;
+    const double limit = 2.0 - 0.25 - 0.25;  // the front edge against the person's side
+    CPPUNIT_ASSERT(robot.pose().x <= limit + 1e-9);
+    CPPUNIT_ASSERT(robot.pose().x >= limit - 0.05 / 4.0 - 1e-9);
+    CPPUNIT_ASSERT(robot.collidesAt({limit + 0.01, 0.0, 0.0}, grid, {&person, 1}));
+    CPPUNIT_ASSERT(!robot.collidesAt({limit + 0.01, 0.0, 0.0}, grid));
+  }
+
   void badInputIsTypedError() {
     const OccupancyGrid grid = openWorld();
     DiffDriveConfig bad;
-    bad.radius = 0.0;
+    bad.footprint = Footprint::disk(0.0);
     CPPUNIT_ASSERT_THROW(DiffDriveRobot(bad, {}), rgnav::ConfigError);
     bad = DiffDriveConfig{};
     bad.maxRotationalAcceleration = NAN;
