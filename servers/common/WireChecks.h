@@ -1,8 +1,9 @@
 // WireChecks: the checks every servant runs on the arguments a call brings from the wire,
 // before any of them reaches a module's state (Common.idl: how operations fail). Each failed
 // check throws RGNav::InvalidArgument naming the argument. The bounds are stated here: strings
-// are bounded in length; counts are capped by each server's --max-batch; no operation takes a
-// sequence from a client (the ORB itself bounds a message by omniORB's giopMaxMsgSize).
+// are bounded in length; counts are capped by each server's --max-batch; the one sequence a
+// client sends, LowLevelDrive::setChain's segments, is bounded by MAX_CHAIN_SEGMENTS (the ORB
+// itself bounds a message by omniORB's giopMaxMsgSize).
 #pragma once
 
 #include <cstddef>

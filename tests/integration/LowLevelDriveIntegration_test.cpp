@@ -3,7 +3,8 @@
 // library (2 m straight, a clothoid into a left arc of 2 m radius) is driven to its end: the
 // simulator's ground truth ends within 5 cm and 3 degrees of the chain's end and stays there. The
 // same chain sent again (a retry) changes nothing; another chain under the same ID, one with an
-// ID not above the last and one the limits cannot drive are refused naming "chain".
+// ID not above the last and one the limits cannot drive are refused naming "chain". Beside the
+// demo's tour, which refuses velocity commands, the drive stands by idle without an error.
 #include <cppunit/extensions/HelperMacros.h>
 
 #include <cmath>
@@ -17,6 +18,7 @@ using namespace rgnav::testing;
 class LowLevelDriveIntegrationTest : public CppUnit::TestFixture {
   CPPUNIT_TEST_SUITE(LowLevelDriveIntegrationTest);
   CPPUNIT_TEST(drivesAChainToItsEnd);
+  CPPUNIT_TEST(standsByBesideATour);
   CPPUNIT_TEST_SUITE_END();
 
  public:
@@ -65,7 +67,41 @@ class LowLevelDriveIntegrationTest : public CppUnit::TestFixture {
     expectRefused(drive, straightThenArc(4, set.latestOdometry(), 1.0, 0.5, 0.5, 0.8));  // not above the last
   }
 
+  // As in the demo set: the tour drives, the drive stands by idle, commands nothing and reports no
+  // error; a chain sent there is refused by the Base, which the drive reports once as its error.
+  void standsByBesideATour() {
+    MotionSet set("", SimulatorDriving::Tour);
+    set.cluster().start();
+    advanceTour(set.laser(), 50);  // 5 s of the tour
+    LowLevelDriveClient& drive = set.drive();
+    waitUntil([&] { return drive.status().counters.at("loop_ticks") > 20; }, "the drive's loop to tick");
+    const ModuleStatusInfo standingBy = drive.status();
+    CPPUNIT_ASSERT_EQUAL(std::string(), standingBy.lastError);
+    CPPUNIT_ASSERT(standingBy.state == ModuleRunState::Running);
+    CPPUNIT_ASSERT_EQUAL(std::uint64_t(0), standingBy.counters.at("commands_sent"));
+    CPPUNIT_ASSERT(drive.driveStatus().drive.state == DriveState::Idle);
+
+    drive.setChain(straightThenArc(1, set.latestOdometry(), 1.0, 0.5, 0.5, 0.8));
+    waitUntil(
+        [&] {
+          advanceTour(set.laser(), 1);  // the drive sees new odometry, tracks and commands
+          return drive.status().lastError.find("base_commands") == 0;
+        },
+        "the refused commands reported");
+    CPPUNIT_ASSERT_EQUAL(std::uint64_t(0), drive.driveStatus().commandsSent);
+  }
+
  private:
+  // The lock-step simulation goes on by `count` scans (a consumer that has every scan paces it).
+  static void advanceTour(LaserClient& laser, DataId count) {
+    DataId after = laser.latestId();
+    const DataId until = after + count;
+    while (after < until) {
+      const DataBatch<LaserScan> got = laser.scansSince(after, 10);
+      if (!got.records.empty()) after = got.records.back().id;
+    }
+  }
+
   static void expectRefused(LowLevelDriveClient& drive, const DriveChain& chain) {
     try {
       drive.setChain(chain);

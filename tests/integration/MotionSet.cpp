@@ -20,15 +20,19 @@ std::string writtenFile(const std::string& path, const std::string& text) {
 
 }  // namespace
 
-MotionSet::MotionSet(const std::string& setYaml) : scratch_("rgnav-motion-set") {
+MotionSet::MotionSet(const std::string& setYaml, SimulatorDriving driving) : scratch_("rgnav-motion-set") {
   const std::string simulation = writtenFile(scratch_.file("noiseless.yaml"), kNoiselessSimulation);
   const std::string start = std::to_string(kStart.x) + "," + std::to_string(kStart.y) + "," + std::to_string(kStart.theta);
+  std::vector<std::string> simulator{TestCluster::program("rgnav-sim"), "--world", shippedConfigFile("worlds/office.yaml"),
+                                     "--config", simulation, "--start", start};
+  if (driving == SimulatorDriving::Tour) {
+    simulator.insert(simulator.end(), {"--clock", "lockstep", "--tour"});
+  } else {
+    simulator.insert(simulator.end(), {"--clock", "realtime"});
+  }
   cluster_ = std::make_unique<TestCluster>(
       std::vector<ClusterModule>{
-          {"Simulator",
-           {TestCluster::program("rgnav-sim"), "--world", shippedConfigFile("worlds/office.yaml"), "--config", simulation,
-            "--clock", "realtime", "--start", start},
-           {"Laser", "Base", "GroundTruth"}},
+          {"Simulator", simulator, {"Laser", "Base", "GroundTruth"}},
           {"LowLevelDrive",
            {TestCluster::program("rgnav-lowleveldrive"), "--config", TestCluster::moduleConfig("lowleveldrive")},
            {"LowLevelDrive"},
@@ -48,10 +52,9 @@ OdometryReading MotionSet::latestOdometry() {
   return batch.records.back();
 }
 
-TrueState MotionSet::latestTruth() {
-  const DataId id = laser_->latestId();
-  return {id, laser_->scan(id).stamp, truth_->truePose(id)};
-}
+TrueState MotionSet::latestTruth() { return truthAt(laser_->latestId()); }
+
+TrueState MotionSet::truthAt(DataId id) { return {id, laser_->scan(id).stamp, truth_->truePose(id)}; }
 
 DriveChain straightThenArc(std::uint64_t id, const OdometryReading& from, double straightM, double easeM,
                            double curvature, double arcM) {

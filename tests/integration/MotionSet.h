@@ -2,7 +2,8 @@
 // simulator in real time following velocity commands on the office floor (config/worlds/
 // office.yaml), starting at the main hallway's west end facing east (kStart), with noiseless
 // odometry (so the odometry frame stays the world frame and the ground truth shows how well the
-// drive tracked), and the LowLevelDrive module on its Base. Clients for the Base, the ground truth
+// drive tracked), and the LowLevelDrive module on its Base. Or, as in the demo set, the simulator
+// in lock-step on its room tour, which refuses velocity commands. Clients for the Base, the ground truth
 // and the drive, and the chains the tests send.
 #pragma once
 
@@ -23,19 +24,23 @@ struct TrueState {
   Pose2D pose;
 };
 
+enum class SimulatorDriving { Velocity, Tour };
+
 class MotionSet {
  public:
   static constexpr Pose2D kStart{1.5, 7.0, 0.0};
 
   // `setYaml`: extra top-level YAML of the set (e.g. kFastBackoff).
-  explicit MotionSet(const std::string& setYaml = "");
+  explicit MotionSet(const std::string& setYaml = "", SimulatorDriving driving = SimulatorDriving::Velocity);
 
   TestCluster& cluster() { return *cluster_; }
   LowLevelDriveClient& drive() { return *drive_; }
+  LaserClient& laser() { return *laser_; }
   // The newest odometry reading of the Base.
   OdometryReading latestOdometry();
-  // The true pose at the newest scan.
+  // The true pose at the newest scan / at scan `id`.
   TrueState latestTruth();
+  TrueState truthAt(DataId id);
 
  private:
   ScratchDir scratch_;

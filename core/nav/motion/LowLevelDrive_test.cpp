@@ -1,5 +1,6 @@
 // Tests the Low-Level Drive closed-loop with the simulated robot at 20 Hz (no odometry noise):
 // it follows a chain and stops at its end within 2 cm and 1 degree, in about the predicted time;
+// it pulls a robot standing beside the chain onto it;
 // it brakes within the limits when its odometry stops; a newer chain replaces the current one and
 // older ids are refused; without a chain and after stop() it stands.
 #include <cppunit/extensions/HelperMacros.h>
@@ -73,6 +74,7 @@ struct Rig {
 class LowLevelDriveTest : public CppUnit::TestFixture {
   CPPUNIT_TEST_SUITE(LowLevelDriveTest);
   CPPUNIT_TEST(stopsAtChainEnd);
+  CPPUNIT_TEST(recoversFromOffset);
   CPPUNIT_TEST(brakesOnOdometryLoss);
   CPPUNIT_TEST(newerChainReplacesCurrent);
   CPPUNIT_TEST(standsWithoutChain);
@@ -101,6 +103,21 @@ class LowLevelDriveTest : public CppUnit::TestFixture {
     for (int k = 0; k < 20; ++k) rig.step();
     CPPUNIT_ASSERT_EQUAL(0.0, rig.command.translational);
     CPPUNIT_ASSERT_EQUAL(0.0, rig.command.rotational);
+  }
+
+  void recoversFromOffset() {
+    // The robot stands 10 cm beside the chain's start, askew: the feedback pulls it onto the chain.
+    Rig rig;
+    rig.robot = DiffDriveRobot(rgnav::DiffDriveConfig{}, {0.0, 0.1, 0.1});
+    const TrajectoryChain chain = turnChain({});
+    rig.drive.setChain({1, chain, 0.0, 0.0});
+    while (rig.now < 4.0) rig.step();
+    CPPUNIT_ASSERT(rig.drive.status().state == DriveState::Tracking);
+    CPPUNIT_ASSERT(std::abs(rig.drive.status().lateralError) < 0.005);
+    rig.runUntilFinished(30.0);
+    const Pose2D error = rgnav::between(chain.end(), rig.robot.pose());
+    CPPUNIT_ASSERT(std::hypot(error.x, error.y) <= 0.02);
+    CPPUNIT_ASSERT(std::abs(error.theta) <= M_PI / 180.0);
   }
 
   void brakesOnOdometryLoss() {
