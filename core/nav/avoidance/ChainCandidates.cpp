@@ -13,6 +13,10 @@ namespace {
 
 // Joins below this length are left out (the targets coincide).
 constexpr double kMinJoinM = 1e-3;
+// Slices shorter than this are left out (a pivot by a degree is some 2e-5 m long).
+constexpr double kMinSliceM = 1e-9;
+// Pivots (turning on the spot) below this angle are left out.
+constexpr double kMinPivotRad = 0.05;
 
 TurnShape shapeOf(const CandidateConfig& config) {
   return {config.turnMaxCurvaturePerM, config.turnSharpnessPerM2, config.turnMaxSharpnessPerM2};
@@ -43,6 +47,10 @@ std::optional<TrajectoryChain> fanChain(const Pose2D& start, double deflection, 
 
 }  // namespace
 
+TrajectorySegment pivot(const Pose2D& at, double angle) {
+  return {at, std::abs(angle) / kPivotCurvature, angle > 0.0 ? kPivotCurvature : -kPivotCurvature, 0.0};
+}
+
 std::vector<Candidate> candidateChains(const ChainStart& start, std::span<const Pose2D> targets,
                                        const CandidateConfig& config) {
   std::vector<Candidate> out;
@@ -62,6 +70,22 @@ std::vector<Candidate> candidateChains(const ChainStart& start, std::span<const 
       if (auto chain = smoothPolyline(start.pose, shifted, shape))
         out.push_back({Candidate::Kind::Deviation, std::move(*chain)});
     }
+  if (start.speed <= 0.0 && config.pivotCount > 0) {
+    // Standing: turn on the spot towards the first target, or by steps either way, then the path.
+    std::vector<double> angles{normalizeAngle(std::atan2(first.y - start.pose.y, first.x - start.pose.x) - start.pose.theta)};
+    for (std::size_t k = 1; k <= config.pivotCount; ++k)
+      for (const double side : {1.0, -1.0})
+        angles.push_back(side * std::min(M_PI, static_cast<double>(k) * config.pivotStepRad));
+    for (const double angle : angles) {
+      if (std::abs(angle) < kMinPivotRad) continue;
+      const TrajectorySegment turn = pivot(start.pose, angle);
+      auto rest = smoothPolyline(turn.end(), ahead, shape);
+      if (!rest) continue;
+      TrajectoryChain chain({turn});
+      for (const TrajectorySegment& segment : rest->segments()) chain.append(segment);
+      out.push_back({Candidate::Kind::Pivot, std::move(chain)});
+    }
+  }
   for (std::size_t i = 0; i < config.fanCount; ++i) {
     const double deflection =
         config.fanCount == 1 ? 0.0
@@ -80,7 +104,7 @@ TrajectoryChain sliceChain(const TrajectoryChain& chain, double from, double to)
   for (const TrajectorySegment& segment : chain.segments()) {
     const double a = std::max(from, segmentStart) - segmentStart;
     const double b = std::min(to, segmentStart + segment.length) - segmentStart;
-    if (b - a > kMinJoinM)
+    if (b - a > kMinSliceM)
       out.append(TrajectorySegment{segment.poseAt(a), b - a, segment.curvatureAt(a), segment.sharpness});
     segmentStart += segment.length;
   }

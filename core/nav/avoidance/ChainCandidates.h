@@ -4,7 +4,11 @@
 // with the first target shifted sideways by a few steps either way (deviations that join back to
 // the path), and a fan of turns by different angles, each followed by a straight (ways out when
 // the targets are blocked). All are curvature-continuous: straights and clothoid-arc-clothoid
-// turns, 0 curvature at both ends (the start state's curvature is not continued).
+// turns, 0 curvature at both ends (the start state's curvature is not continued). A robot that
+// stands may also first turn on the spot (towards the first target, or by steps either way):
+// the pivot is an arc of kPivotCurvature, a millimetre-radius circle, which the velocity profile
+// drives at the rotational limits with next to no translation (the primitives have no other way
+// to say "turn in place").
 // Every chain ends where the robot is to stand: the caller times it to a standstill.
 #pragma once
 
@@ -16,6 +20,12 @@
 
 namespace rgnav {
 
+// The curvature of a turn on the spot, 1/m.
+constexpr double kPivotCurvature = 1000.0;
+
+// Turning on the spot at `at` by `angle` (positive: left).
+TrajectorySegment pivot(const Pose2D& at, double angle);
+
 struct ChainStart {
   Pose2D pose;
   double speed = 0.0;      // m/s
@@ -23,7 +33,7 @@ struct ChainStart {
 };
 
 struct Candidate {
-  enum class Kind { Path, Deviation, Fan };
+  enum class Kind { Path, Deviation, Fan, Pivot };
   Kind kind = Kind::Path;
   TrajectoryChain chain;
 };

@@ -16,8 +16,14 @@ namespace {
 constexpr double kMaxTrackingErrorM = 0.3;
 // A robot slower than this stands.
 constexpr double kStandingSpeed = 0.02;
+// Curvatures below this are straight.
+constexpr double kStraight = 1e-6;
+// A new chain continues the current one's turn to its end if that lies within this.
+constexpr double kMaxLeadM = 3.0;
 // Chains cut short before an obstacle must still be this long to be worth driving.
 constexpr double kMinChainM = 0.15;
+// A chain cut short stops this far before where it would come too close: room to turn away.
+constexpr double kCutBackM = 0.3;
 // What cutting a chain short costs: a chain that reaches its end beats one that stops early.
 constexpr double kCutPenaltyS = 2.0;
 
@@ -47,19 +53,33 @@ CollisionAvoidance::CollisionAvoidance(const CollisionAvoidanceConfig& config, c
 void CollisionAvoidance::setTargets(std::vector<Pose2D> targets) {
   targets_ = std::move(targets);
   targetsChanged_ = true;
-  waitingSince_.reset();
 }
 
-ChainStart CollisionAvoidance::chainStart(const RobotState& state) const {
+CollisionAvoidance::PlanStart CollisionAvoidance::planStart(const RobotState& state) const {
   if (current_ && currentTimed_) {
     const double t = state.stamp + config_.planningLatencyS - current_->startTime;
     if (t < currentTimed_->duration()) {
       const ReferenceState ref = currentTimed_->stateAt(std::max(t, 0.0));
-      if (distance(ref.pose, state.pose) < kMaxTrackingErrorM)
-        return {ref.pose, ref.velocity, current_->chain.curvatureAt(ref.s)};
+      if (distance(ref.pose, state.pose) < kMaxTrackingErrorM) {
+        const TrajectoryChain& chain = current_->chain;
+        // The lead: the rest of the turn the reference is in, up to where the curvature is 0.
+        double leadEnd = ref.s;
+        if (std::abs(chain.curvatureAt(ref.s)) > kStraight) {
+          double segmentStart = 0.0;
+          for (const TrajectorySegment& segment : chain.segments()) {
+            if (segmentStart > ref.s && std::abs(segment.curvature) <= kStraight) {
+              if (segmentStart - ref.s <= kMaxLeadM) leadEnd = segmentStart;
+              break;
+            }
+            segmentStart += segment.length;
+          }
+        }
+        return {{ref.pose, ref.velocity, chain.curvatureAt(ref.s)}, sliceChain(chain, ref.s, leadEnd), ref.s,
+                chain.length() - ref.s};
+      }
     }
   }
-  return {state.pose, 0.0, 0.0};
+  return {{state.pose, 0.0, 0.0}, {}, 0.0, 0.0};
 }
 
 SweptCheckOptions CollisionAvoidance::checkOptions() const {
@@ -97,24 +117,36 @@ double CollisionAvoidance::pathLeftFrom(const Pose2D& end) const {
   return best;
 }
 
-std::optional<CollisionAvoidance::Scored> CollisionAvoidance::bestCandidate(const ChainStart& start,
+std::vector<Candidate> CollisionAvoidance::candidatesFrom(const PlanStart& start) const {
+  std::vector<Candidate> all = candidateChains(start.state, targets_, config_.candidates);
+  if (start.lead.empty()) return all;
+  for (Candidate& candidate : candidateChains({start.lead.end(), 0.0, 0.0}, targets_, config_.candidates)) {
+    TrajectoryChain joined = start.lead;
+    for (const TrajectorySegment& segment : candidate.chain.segments()) joined.append(segment);
+    all.push_back({candidate.kind, std::move(joined)});
+  }
+  return all;
+}
+
+std::optional<CollisionAvoidance::Scored> CollisionAvoidance::bestCandidate(const PlanStart& start,
                                                                             const ObstacleClearance& clearance) const {
   std::optional<Scored> best;
-  for (Candidate& candidate : candidateChains(start, targets_, config_.candidates)) {
+  for (Candidate& candidate : candidatesFrom(start)) {
     const SweptCheck check = checkSwept(clearance, candidate.chain, footprint_, checkOptions());
     double cost = 0.0;
     if (!check.clear) {
-      if (check.freeLength < kMinChainM) continue;
-      candidate.chain = sliceChain(candidate.chain, 0.0, check.freeLength);
+      const double keep = check.freeLength - kCutBackM;
+      if (keep < kMinChainM) continue;
+      candidate.chain = sliceChain(candidate.chain, 0.0, keep);
       cost += kCutPenaltyS;
     }
     std::optional<TimedTrajectory> timed;
     try {
-      timed.emplace(candidate.chain, limits_, start.speed, 0.0);
+      timed.emplace(candidate.chain, limits_, start.state.speed, 0.0);
     } catch (const InvalidArgumentError&) {
       continue;  // cannot stop within it from the start speed
     }
-    cost += timed->duration() + config_.progressWeightSPerM * pathLeftFrom(candidate.chain.end()) / limits_.maxVelocity +
+    cost += timed->duration() + config_.progressWeightSPerM * pathLeftFrom(candidate.chain.end()) +
             config_.clearanceWeightSPerM *
                 std::max(0.0, config_.safetyMarginM + config_.comfortClearanceM - check.minClearance);
     if (!best || cost < best->cost) best = Scored{std::move(candidate), std::move(*timed), cost};
@@ -122,23 +154,27 @@ std::optional<CollisionAvoidance::Scored> CollisionAvoidance::bestCandidate(cons
   return best;
 }
 
-std::optional<TrajectoryChain> CollisionAvoidance::brakingChain(const ChainStart& start) const {
-  if (start.speed < kStandingSpeed) return std::nullopt;
-  const double length = 1.1 * start.speed * start.speed / (2.0 * limits_.maxDeceleration) + 0.02;
-  return TrajectoryChain({TrajectorySegment{start.pose, length, start.curvature, 0.0}});
+std::optional<TrajectoryChain> CollisionAvoidance::brakingChain(const PlanStart& start) const {
+  const ChainStart& from = start.state;
+  if (from.speed < kStandingSpeed) return std::nullopt;
+  const double length = 1.1 * from.speed * from.speed / (2.0 * limits_.maxDeceleration) + 0.02;
+  // Along the current chain where it goes on far enough (it was free when planned), else on the
+  // arc the robot is on.
+  if (start.leftOnCurrent >= length) return sliceChain(current_->chain, start.onCurrent, start.onCurrent + length);
+  return TrajectoryChain({TrajectorySegment{from.pose, length, from.curvature, 0.0}});
 }
 
-AvoidanceDecision CollisionAvoidance::send(const RobotState& state, const ChainStart& start, TrajectoryChain chain,
-                                           AvoidanceAction action, std::string reason) {
-  DriveChain drive{nextId_++, std::move(chain), start.speed, state.stamp + config_.planningLatencyS};
-  currentTimed_.emplace(drive.chain, limits_, drive.startSpeed, 0.0);
+AvoidanceDecision CollisionAvoidance::send(const RobotState& state, TimedTrajectory timed, AvoidanceAction action,
+                                           std::string reason) {
+  DriveChain drive{nextId_++, timed.chain(), timed.startSpeed(), state.stamp + config_.planningLatencyS};
+  currentTimed_ = std::move(timed);
   current_ = drive;
   lastPlan_ = state.stamp;
   targetsChanged_ = false;
   return {action, std::move(drive), std::move(reason)};
 }
 
-AvoidanceDecision CollisionAvoidance::wait(const RobotState& state, const ChainStart& start, bool currentFree) {
+AvoidanceDecision CollisionAvoidance::wait(const RobotState& state, const PlanStart& start, bool currentFree) {
   if (!waitingSince_) waitingSince_ = state.stamp;
   if (state.stamp - *waitingSince_ >= config_.blockedWaitS && std::abs(state.velocity) < kStandingSpeed) {
     waitingSince_ = state.stamp;
@@ -147,7 +183,8 @@ AvoidanceDecision CollisionAvoidance::wait(const RobotState& state, const ChainS
   if (!currentFree) {
     if (auto braking = brakingChain(start)) {
       try {
-        return send(state, start, std::move(*braking), AvoidanceAction::Wait, "no free chain: braking");
+        return send(state, TimedTrajectory(std::move(*braking), limits_, start.state.speed, 0.0), AvoidanceAction::Wait,
+                    "no free chain: braking");
       } catch (const InvalidArgumentError&) {
         // the limits cannot time the braking arc: the Low-Level Drive brakes at the chain's end
       }
@@ -166,21 +203,22 @@ AvoidanceDecision CollisionAvoidance::update(const RobotState& state, std::span<
     return {AvoidanceAction::GoalReached, std::nullopt, "at the goal"};
   }
   const ObstacleClearance clearance(fuseObstacles(grids));
-  const ChainStart start = chainStart(state);
-  dropPassedTargets(start.pose);
+  const PlanStart start = planStart(state);
+  dropPassedTargets(start.state.pose);
   const bool currentFree = currentStillFree(state, clearance);
   const bool endsAtGoal = current_ && distance(current_->chain.end(), goal) <= config_.goalToleranceM;
-  const bool due = state.stamp - lastPlan_ >= config_.replanPeriodS && !endsAtGoal;
-  if (currentFree && !targetsChanged_ && !due) return {AvoidanceAction::Keep, std::nullopt, "chain free"};
+  const bool running = start.leftOnCurrent > 0.0;
+  const bool refresh = !endsAtGoal && start.leftOnCurrent < config_.refreshDistanceM;
+  const bool newTargets = targetsChanged_ && (!running || state.stamp - lastPlan_ >= config_.replanPeriodS);
+  if (currentFree && running && !refresh && !newTargets) return {AvoidanceAction::Keep, std::nullopt, "chain free"};
 
-  const auto best = bestCandidate(start, clearance);
+  auto best = bestCandidate(start, clearance);
   if (!best) {
-    if (currentFree) return {AvoidanceAction::Keep, std::nullopt, "no better chain"};
-    return wait(state, start, currentFree);
+    if (currentFree && running) return {AvoidanceAction::Keep, std::nullopt, "no better chain"};
+    return wait(state, start, currentFree && running);
   }
   waitingSince_.reset();
-  return send(state, start, best->candidate.chain, AvoidanceAction::Drive,
-              currentFree ? "replanned" : "obstacle on the chain");
+  return send(state, std::move(best->timed), AvoidanceAction::Drive, currentFree ? "replanned" : "obstacle on the chain");
 }
 
 }  // namespace rgnav

@@ -72,17 +72,26 @@ class CollisionAvoidance {
     TimedTrajectory timed;
     double cost = 0.0;
   };
+  // Where the next chain starts: the state one planning latency ahead on the current chain (or
+  // the robot, standing), the rest of the turn it is in (the lead, so that new chains do not
+  // jump in curvature), and how much of the current chain is left from there.
+  struct PlanStart {
+    ChainStart state;
+    TrajectoryChain lead;
+    double onCurrent = 0.0;      // arc length of the start on the current chain
+    double leftOnCurrent = 0.0;  // 0: the next chain starts at the robot, standing
+  };
 
-  ChainStart chainStart(const RobotState& state) const;
+  PlanStart planStart(const RobotState& state) const;
   SweptCheckOptions checkOptions() const;
   bool currentStillFree(const RobotState& state, const ObstacleClearance& clearance) const;
   void dropPassedTargets(const Pose2D& from);
   double pathLeftFrom(const Pose2D& end) const;
-  std::optional<Scored> bestCandidate(const ChainStart& start, const ObstacleClearance& clearance) const;
-  std::optional<TrajectoryChain> brakingChain(const ChainStart& start) const;
-  AvoidanceDecision send(const RobotState& state, const ChainStart& start, TrajectoryChain chain,
-                         AvoidanceAction action, std::string reason);
-  AvoidanceDecision wait(const RobotState& state, const ChainStart& start, bool currentFree);
+  std::vector<Candidate> candidatesFrom(const PlanStart& start) const;
+  std::optional<Scored> bestCandidate(const PlanStart& start, const ObstacleClearance& clearance) const;
+  std::optional<TrajectoryChain> brakingChain(const PlanStart& start) const;
+  AvoidanceDecision send(const RobotState& state, TimedTrajectory timed, AvoidanceAction action, std::string reason);
+  AvoidanceDecision wait(const RobotState& state, const PlanStart& start, bool currentFree);
 
   CollisionAvoidanceConfig config_;
   Footprint footprint_;

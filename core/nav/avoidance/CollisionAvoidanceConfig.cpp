@@ -31,6 +31,7 @@ void validate(const CandidateConfig& c) {
   if (!(c.fanMaxDeflectionRad >= 0.0) || !(c.fanMaxDeflectionRad < M_PI))
     throw ConfigError("collision avoidance: candidates.fan_max_deflection_deg must lie in [0, 180)");
   positive(c.fanLengthM, "candidates.fan_length_m");
+  positive(c.pivotStepRad, "candidates.pivot_step_deg");
 }
 
 void validate(const GoalSeekingConfig& c) {
@@ -54,6 +55,7 @@ void validate(const CollisionAvoidanceConfig& c) {
   nonNegative(c.progressWeightSPerM, "progress_weight_s_per_m");
   nonNegative(c.planningLatencyS, "planning_latency_s");
   positive(c.replanPeriodS, "replan_period_s");
+  nonNegative(c.refreshDistanceM, "refresh_distance_m");
   positive(c.targetPassedM, "target_passed_m");
   positive(c.goalToleranceM, "goal_tolerance_m");
   positive(c.blockedWaitS, "blocked_wait_s");

@@ -15,13 +15,15 @@ namespace rgnav {
 struct CandidateConfig {
   double horizonM = 5.0;             // a chain covers targets up to this far along them
   double turnMaxCurvaturePerM = 3.0; // the turns of the joins (PoseJoins.h TurnShape)
-  double turnSharpnessPerM2 = 6.0;
+  double turnSharpnessPerM2 = 1.0;
   double turnMaxSharpnessPerM2 = 40.0;
   double lateralStepM = 0.2;         // deviations: the next target shifted sideways by k * step
   std::size_t lateralCount = 4;      // ... for k = 1..count on either side
   double fanMaxDeflectionRad = 1.2;  // fan: turn by up to +-this, then straight on
   std::size_t fanCount = 9;          // ... this many chains (odd: straight ahead is one)
   double fanLengthM = 1.5;           // length of each fan chain
+  double pivotStepRad = 0.785;       // standing: turns on the spot by k * step, k = 1..count
+  std::size_t pivotCount = 4;        // ... either way (0: no turns on the spot)
 };
 
 struct GoalSeekingConfig {
@@ -41,9 +43,10 @@ struct CollisionAvoidanceConfig {
   double sampleStepM = 0.03;            // poses sampled along chains
   double comfortClearanceM = 0.3;       // chains closer than margin + this pay extra
   double clearanceWeightSPerM = 4.0;    // seconds of cost per metre of clearance below comfort
-  double progressWeightSPerM = 1.0;     // seconds of cost per metre left to the goal (over top speed)
+  double progressWeightSPerM = 2.0;     // seconds of cost per metre left from a chain's end to the goal
   double planningLatencyS = 0.1;        // a new chain starts this far ahead on the current one
-  double replanPeriodS = 0.3;           // replan at least this often while driving
+  double replanPeriodS = 1.0;           // new targets: replan if the last plan is this old
+  double refreshDistanceM = 2.5;        // replan when less than this is left of the chain
   double targetPassedM = 0.5;           // targets closer than this to the chain's start are passed
   double goalToleranceM = 0.1;          // at the last target within this and standing: reached
   double blockedWaitS = 3.0;            // no free chain for this long: blocked

@@ -35,6 +35,8 @@ void describe(V& v, CandidateConfig& c) {
   v.degrees("fan_max_deflection_deg", c.fanMaxDeflectionRad);
   v.field("fan_count", c.fanCount);
   v.field("fan_length_m", c.fanLengthM);
+  v.degrees("pivot_step_deg", c.pivotStepRad);
+  v.field("pivot_count", c.pivotCount);
 }
 
 template <class V>
@@ -59,6 +61,7 @@ void describe(V& v, CollisionAvoidanceConfig& c) {
   v.field("progress_weight_s_per_m", c.progressWeightSPerM);
   v.field("planning_latency_s", c.planningLatencyS);
   v.field("replan_period_s", c.replanPeriodS);
+  v.field("refresh_distance_m", c.refreshDistanceM);
   v.field("target_passed_m", c.targetPassedM);
   v.field("goal_tolerance_m", c.goalToleranceM);
   v.field("blocked_wait_s", c.blockedWaitS);

@@ -12,6 +12,8 @@ namespace rgnav {
 namespace {
 
 constexpr double kFar = 1e9;
+// Heading change between two sampled poses at most, rad (turns on the spot).
+constexpr double kMaxTurnPerSample = 0.05;
 
 OccupancyGrid onlyOccupied(OccupancyGrid grid) {
   for (int row = 0; row < grid.height(); ++row)
@@ -76,13 +78,26 @@ SweptCheck checkSwept(const ObstacleClearance& clearance, const TrajectoryChain&
   out.minClearance = options.marginM + options.clearanceCapM;
   if (chain.empty()) return out;
   const double length = chain.length();
-  const int steps = std::max(1, static_cast<int>(std::ceil(length / options.stepM)));
-  for (int i = 0; i <= steps; ++i) {
-    const double s = length * i / steps;
-    const double d = clearance.footprintClearance(footprint, chain.poseAt(s), out.minClearance);
-    if (d < options.marginM) {
+  // Samples every stepM along the chain and every kMaxTurnPerSample of heading (pivots).
+  std::vector<double> samples{0.0};
+  double segmentStart = 0.0;
+  for (const TrajectorySegment& segment : chain.segments()) {
+    const double turn = std::abs(segment.curvature) * segment.length + std::abs(segment.sharpness) * segment.length * segment.length / 2.0;
+    const int n = std::max(1, static_cast<int>(std::ceil(std::max(segment.length / options.stepM, turn / kMaxTurnPerSample))));
+    for (int k = 1; k <= n; ++k) samples.push_back(segmentStart + segment.length * k / n);
+    segmentStart += segment.length;
+  }
+  // A robot that already stands closer than the margin may leave: near the start it must only
+  // not come closer.
+  const double atStart = clearance.footprintClearance(footprint, chain.start(), out.minClearance);
+  const double startRequired = std::min(options.marginM, atStart);
+  for (std::size_t i = 0; i < samples.size(); ++i) {
+    const double s = samples[i];
+    const double d = i == 0 ? atStart : clearance.footprintClearance(footprint, chain.poseAt(s), out.minClearance);
+    const double required = s <= options.reliefM ? std::max(startRequired, 0.0) : options.marginM;
+    if (d < required || (i == 0 && d <= 0.0)) {
       out.clear = false;
-      out.freeLength = std::max(0.0, length * (i - 1) / steps);
+      out.freeLength = i == 0 ? 0.0 : samples[i - 1];
       return out;
     }
     out.minClearance = std::min(out.minClearance, d);

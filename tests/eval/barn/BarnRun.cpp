@@ -3,7 +3,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <filesystem>
+#include <optional>
 
 #include "core/nav/avoidance/MaplessNavigator.h"
 #include "core/sim/LoadedWorld.h"
@@ -31,6 +33,7 @@ BarnResult runBarnWorld(const std::string& worldYaml, const BarnSetup& setup) {
   // The odometry frame starts at the start pose: the goal is where the task puts it.
   navigator.setGoal(task.goal);
   const double start = sim.time();
+  std::optional<DriveChain> pending;
   while (sim.time() - start < setup.timeLimitS) {
     const SimulationStep step = sim.step();
     if (step.collided) {
@@ -45,8 +48,18 @@ BarnResult runBarnWorld(const std::string& worldYaml, const BarnSetup& setup) {
       const RobotState state{step.odometry.stamp, step.odometry.pose, step.odometry.translationalVelocity,
                              step.odometry.rotationalVelocity};
       const AvoidanceDecision decision = navigator.onScan(*step.scan, state);
-      if (decision.chain) drive.setChain(*decision.chain);
+      if (decision.chain) pending = decision.chain;
       result.blocked += decision.action == AvoidanceAction::Blocked;
+      if (setup.trace && decision.action != AvoidanceAction::Keep)
+        std::printf("# %s t=%.2f pose=(%.2f %.2f %.2f) v=%.2f targets=%zu %s: %s%s\n", result.name.c_str(),
+                    sim.time() - start, state.pose.x, state.pose.y, state.pose.theta, state.velocity,
+                    navigator.avoidance().targets().size(), toString(decision.action).c_str(), decision.reason.c_str(),
+                    decision.chain ? (" length=" + std::to_string(decision.chain->chain.length())).c_str() : "");
+    }
+    // A chain reaches the drive at its start time, as from a module one planning latency away.
+    if (pending && step.odometry.stamp >= pending->startTime - 1e-9) {
+      drive.setChain(*pending);
+      pending.reset();
     }
     sim.command(drive.tick(step.odometry, step.odometry.stamp));
   }

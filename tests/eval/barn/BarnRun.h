@@ -21,6 +21,7 @@ struct BarnSetup {
   LowLevelDriveConfig drive;
   double timeLimitS = 100.0;
   double goalRadiusM = 1.0;
+  bool trace = false;  // print every decision that is not Keep
 };
 
 struct BarnResult {

@@ -48,6 +48,8 @@ int main(int argc, char** argv) {
   std::string avoidanceConfig = "config/modules/collisionavoidance.yaml";
   double lateralAcceleration = 3.0;
   unsigned threads = 2;
+  bool trace = false;
+  PostureGains gains;
   po::options_description desc("rgnav-eval-barn [options] <barn_NNN.yaml...>: the BARN navigation benchmark");
   desc.add_options()
       ("world", po::value(&worlds)->required(), "BARN worlds (map_server YAML with a task)")
@@ -55,7 +57,11 @@ int main(int argc, char** argv) {
       ("config", po::value(&avoidanceConfig)->default_value(avoidanceConfig), "the Collision Avoidance's parameters")
       ("lateral-acceleration", po::value(&lateralAcceleration)->default_value(lateralAcceleration),
        "m/s^2 the chains may ask on turns")
-      ("threads", po::value(&threads)->default_value(threads), "worlds run at a time");
+      ("kx", po::value(&gains.kx)->default_value(gains.kx), "tracking gain K_x, 1/s (PostureController.h)")
+      ("ky", po::value(&gains.ky)->default_value(gains.ky), "tracking gain K_y, 1/m^2")
+      ("ktheta", po::value(&gains.ktheta)->default_value(gains.ktheta), "tracking gain K_theta, 1/m")
+      ("threads", po::value(&threads)->default_value(threads), "worlds run at a time")
+      ("trace", po::bool_switch(&trace), "print every decision of the Collision Avoidance but keep");
   po::positional_options_description positional;
   positional.add("world", -1);
   try {
@@ -66,6 +72,8 @@ int main(int argc, char** argv) {
     setup.avoidance.obstacleMap.laserForwardOffsetM = setup.sim.laser.forwardOffset;
     setup.drive.limits = limitsOf(setup.sim.robot, lateralAcceleration);
     setup.drive.periodSeconds = setup.sim.stepSeconds;
+    setup.trace = trace;
+    setup.drive.gains = gains;
 
     std::vector<BarnResult> results(worlds.size());
     std::vector<bool> done(worlds.size(), false);
