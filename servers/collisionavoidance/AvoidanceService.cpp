@@ -1,8 +1,10 @@
 // The Collision Avoidance module's follower, drives and checkpoint (see AvoidanceService.h).
 #include "servers/collisionavoidance/AvoidanceService.h"
 
+#include <chrono>
 #include <cmath>
 #include <iostream>
+#include <thread>
 
 #include "core/common/AtomicFile.h"
 #include "core/nav/grid/PlanningErrors.h"
@@ -135,6 +137,8 @@ RobotState AvoidanceService::robotState() {
   const auto batch = base_.odometrySince(latest - 1, 1);
   if (batch.records.empty()) throw NotAvailableError("the Base's newest odometry reading is gone");
   const OdometryReading& r = batch.records.back();
+  stateWall_ = std::chrono::steady_clock::now();
+  stateStamp_ = r.stamp;
   return {r.stamp, r.pose, r.translationalVelocity, r.rotationalVelocity};
 }
 
@@ -296,6 +300,10 @@ void AvoidanceService::decide(const DriveRecord& drive, std::uint64_t generation
 
 void AvoidanceService::send(DriveChain chain) {
   chain.id += chainBase_;
+  // The drive replaces its chain at once, so the chain goes out when the odometry clock reaches
+  // its start (one planning latency after the reading it was planned from), not before.
+  std::this_thread::sleep_until(stateWall_ + std::chrono::duration_cast<std::chrono::steady_clock::duration>(
+                                                 std::chrono::duration<double>(chain.startTime - stateStamp_)));
   try {
     lld_.setChain(chain);
   } catch (const BadArgumentError& e) {

@@ -20,6 +20,7 @@
 // Health: scans, chains_sent, chains_refused, plans, replans, doors_reported, drives.
 #pragma once
 
+#include <chrono>
 #include <mutex>
 #include <optional>
 #include <string>
@@ -94,6 +95,8 @@ class AvoidanceService {
   LaserObstacleMap obstacles_;
   std::optional<CollisionAvoidance> core_;
   DataId lastScan_ = 0;
+  std::chrono::steady_clock::time_point stateWall_;  // when the latest odometry reading was read
+  double stateStamp_ = 0.0;                          // its stamp (odometry clock)
   std::uint64_t chainBase_ = 0;
   std::uint64_t appliedGeneration_ = 0;
   bool settled_ = false;  // the robot stood still once since the start

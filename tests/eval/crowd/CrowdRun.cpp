@@ -17,6 +17,7 @@ using Clock = std::chrono::steady_clock;
 namespace {
 
 constexpr auto kPollPeriod = std::chrono::milliseconds(100);
+constexpr auto kReportPeriod = std::chrono::seconds(10);  // verbose: a progress line this often
 
 double seconds(Clock::duration d) { return std::chrono::duration<double>(d).count(); }
 
@@ -39,6 +40,7 @@ GoalOutcome driveOne(CollisionAvoidanceClient& cam, TruePoseProbe& probe, const 
   std::uint64_t request = 0;
   const auto begin = Clock::now();
   std::optional<Pose2D> previous;
+  auto nextReport = begin + kReportPeriod;
   for (auto next = begin;; next += kPollPeriod) {
     testing::sleepUntilOrInterrupted(next);
     if (seconds(Clock::now() - begin) > options.goalTimeoutS) {
@@ -63,6 +65,13 @@ GoalOutcome driveOne(CollisionAvoidanceClient& cam, TruePoseProbe& probe, const 
       }
     }
     if (!status) continue;
+    if (options.verbose && (toString(status->phase) != outcome.finalState || next >= nextReport)) {
+      std::fprintf(stderr, "  %6.1f s: %-10s at (%.2f, %.2f) target %u/%u, %.1f m left, %llu chains %s\n",
+                   seconds(Clock::now() - begin), toString(status->phase).c_str(), here.pose.x, here.pose.y,
+                   status->targetIndex, status->targetCount, status->distanceLeftM,
+                   static_cast<unsigned long long>(status->chainsSent), status->reason.c_str());
+      nextReport = next + kReportPeriod;
+    }
     outcome.finalState = toString(status->phase);
     outcome.replans = status->replans;
     if (status->phase == DrivePhase::Failed) break;

@@ -18,14 +18,19 @@ std::string poseArgument(const Pose2D& p) {
   return text;
 }
 
+std::vector<std::string> simulatorCommand(const CrowdSetOptions& o) {
+  std::vector<std::string> command{TestCluster::program("rgnav-sim"), "--world", o.world, "--config", o.simConfig,
+                                   "--clock", "realtime", "--start", poseArgument(o.start),
+                                   "--seed", std::to_string(o.seed)};
+  if (o.people > 0) command.insert(command.end(), {"--people", std::to_string(o.people)});
+  return command;
+}
+
 }  // namespace
 
 CrowdSet::CrowdSet(const CrowdSetOptions& o, const RgMapState& map)
     : cluster_(std::make_unique<TestCluster>(std::vector<ClusterModule>{
-          {"Simulator",
-           {TestCluster::program("rgnav-sim"), "--world", o.world, "--config", o.simConfig, "--clock", "realtime",
-            "--start", poseArgument(o.start), "--people", std::to_string(o.people), "--seed", std::to_string(o.seed)},
-           {"Laser", "Base", "GroundTruth"}},
+          {"Simulator", simulatorCommand(o), {"Laser", "Base", "GroundTruth"}},
           {"LowLevelDrive",
            {TestCluster::program("rgnav-lowleveldrive"), "--config", TestCluster::moduleConfig("lowleveldrive")},
            {"LowLevelDrive"},
