@@ -135,7 +135,10 @@ std::optional<CollisionAvoidance::Scored> CollisionAvoidance::bestCandidate(cons
     const SweptCheck check = checkSwept(clearance, candidate.chain, footprint_, checkOptions());
     double cost = 0.0;
     if (!check.clear) {
-      const double keep = check.freeLength - kCutBackM;
+      // Room to turn away before the obstacle if the robot can stop there, else up to it.
+      const double keep = check.freeLength - kCutBackM >= std::max(kMinChainM, brakingDistance(start.state.speed))
+                              ? check.freeLength - kCutBackM
+                              : check.freeLength;
       if (keep < kMinChainM) continue;
       candidate.chain = sliceChain(candidate.chain, 0.0, keep);
       cost += kCutPenaltyS;
@@ -154,14 +157,28 @@ std::optional<CollisionAvoidance::Scored> CollisionAvoidance::bestCandidate(cons
   return best;
 }
 
-std::optional<TrajectoryChain> CollisionAvoidance::brakingChain(const PlanStart& start) const {
+double CollisionAvoidance::brakingDistance(double speed) const {
+  return speed * speed / (2.0 * limits_.maxDeceleration);
+}
+
+std::optional<TimedTrajectory> CollisionAvoidance::brakingChain(const PlanStart& start) const {
   const ChainStart& from = start.state;
   if (from.speed < kStandingSpeed) return std::nullopt;
-  const double length = 1.1 * from.speed * from.speed / (2.0 * limits_.maxDeceleration) + 0.02;
+  const double shortest = brakingDistance(from.speed) + 0.02;
   // Along the current chain where it goes on far enough (it was free when planned), else on the
-  // arc the robot is on.
-  if (start.leftOnCurrent >= length) return sliceChain(current_->chain, start.onCurrent, start.onCurrent + length);
-  return TrajectoryChain({TrajectorySegment{from.pose, length, from.curvature, 0.0}});
+  // arc the robot is on; turns brake slower (rotational acceleration), so longer if need be.
+  for (const double stretch : {1.1, 1.5, 2.0, 3.0, 5.0}) {
+    const double length = stretch * shortest;
+    TrajectoryChain chain = start.leftOnCurrent >= length
+                                ? sliceChain(current_->chain, start.onCurrent, start.onCurrent + length)
+                                : TrajectoryChain({TrajectorySegment{from.pose, length, from.curvature, 0.0}});
+    try {
+      return TimedTrajectory(std::move(chain), limits_, from.speed, 0.0);
+    } catch (const InvalidArgumentError&) {
+      // too short to stop within: longer
+    }
+  }
+  return std::nullopt;
 }
 
 AvoidanceDecision CollisionAvoidance::send(const RobotState& state, TimedTrajectory timed, AvoidanceAction action,
@@ -181,13 +198,11 @@ AvoidanceDecision CollisionAvoidance::wait(const RobotState& state, const PlanSt
     return {AvoidanceAction::Blocked, std::nullopt, "no free chain for " + std::to_string(config_.blockedWaitS) + " s"};
   }
   if (!currentFree) {
-    if (auto braking = brakingChain(start)) {
-      try {
-        return send(state, TimedTrajectory(std::move(*braking), limits_, start.state.speed, 0.0), AvoidanceAction::Wait,
-                    "no free chain: braking");
-      } catch (const InvalidArgumentError&) {
-        // the limits cannot time the braking arc: the Low-Level Drive brakes at the chain's end
-      }
+    if (auto braking = brakingChain(start)) return send(state, std::move(*braking), AvoidanceAction::Wait, "no free chain: braking");
+    if (start.state.speed >= kStandingSpeed) {
+      current_.reset();
+      currentTimed_.reset();
+      return {AvoidanceAction::Wait, std::nullopt, "no free chain: stop now", true};
     }
   }
   return {AvoidanceAction::Wait, std::nullopt, "no free chain"};

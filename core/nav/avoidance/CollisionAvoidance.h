@@ -49,6 +49,7 @@ struct AvoidanceDecision {
   AvoidanceAction action = AvoidanceAction::Keep;
   std::optional<DriveChain> chain;  // Drive; Wait when the robot must brake
   std::string reason;
+  bool stopNow = false;  // Wait: no braking chain could be timed; the caller stops the drive at once
 };
 
 class CollisionAvoidance {
@@ -89,7 +90,8 @@ class CollisionAvoidance {
   double pathLeftFrom(const Pose2D& end) const;
   std::vector<Candidate> candidatesFrom(const PlanStart& start) const;
   std::optional<Scored> bestCandidate(const PlanStart& start, const ObstacleClearance& clearance) const;
-  std::optional<TrajectoryChain> brakingChain(const PlanStart& start) const;
+  double brakingDistance(double speed) const;
+  std::optional<TimedTrajectory> brakingChain(const PlanStart& start) const;
   AvoidanceDecision send(const RobotState& state, TimedTrajectory timed, AvoidanceAction action, std::string reason);
   AvoidanceDecision wait(const RobotState& state, const PlanStart& start, bool currentFree);
 

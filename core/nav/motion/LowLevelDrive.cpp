@@ -26,7 +26,27 @@ double towards(double current, double wanted, double maxUp, double maxDown) {
   return current + std::clamp(wanted - current, -step, step);
 }
 
+// The pose after driving at the command's speeds for dt seconds (an arc; backwards for a negative
+// translational speed).
+Pose2D afterCommand(const Pose2D& p, const VelocityCommand& c, double dt) {
+  const double distance = std::abs(c.translational) * dt;
+  if (distance < 1e-12) return {p.x, p.y, normalizeAngle(p.theta + c.rotational * dt)};
+  const double flip = c.translational < 0.0 ? M_PI : 0.0;
+  Pose2D end = TrajectorySegment{{p.x, p.y, p.theta + flip}, distance, c.rotational * dt / distance, 0.0}.end();
+  end.theta = normalizeAngle(end.theta - flip);
+  return end;
+}
+
 }  // namespace
+
+MotionLimits referenceLimits(const LowLevelDriveConfig& config) {
+  MotionLimits limits = config.limits;
+  const double keep = 1.0 - config.referenceMargin;
+  limits.maxAcceleration *= keep;
+  limits.maxDeceleration *= keep;
+  limits.maxRotationalAcceleration *= keep;
+  return limits;
+}
 
 std::string toString(DriveState state) {
   switch (state) {
@@ -42,6 +62,13 @@ LowLevelDrive::LowLevelDrive(const LowLevelDriveConfig& config)
     : config_(config), controller_(config.gains, config.limits) {
   requirePositive(config_.periodSeconds, "low-level drive period");
   requirePositive(config_.odometryTimeoutSeconds, "low-level drive odometry timeout");
+  if (config_.commandDelayTicks < 0 || config_.commandDelayTicks > 5) {
+    throw ConfigError("low-level drive command delay must be 0 to 5 ticks");
+  }
+  if (!(config_.referenceMargin >= 0.0 && config_.referenceMargin <= 0.5)) {
+    throw ConfigError("low-level drive reference margin must be 0 to 0.5");
+  }
+  inFlight_.assign(static_cast<std::size_t>(config_.commandDelayTicks), VelocityCommand{});
 }
 
 void LowLevelDrive::setChain(const DriveChain& chain) {
@@ -49,7 +76,7 @@ void LowLevelDrive::setChain(const DriveChain& chain) {
     throw InvalidArgumentError("low-level drive: chain id " + std::to_string(chain.id) +
                                " is not above the last one (" + std::to_string(lastChainId_) + ")");
   }
-  TimedTrajectory timed(chain.chain, config_.limits, chain.startSpeed, 0.0);
+  TimedTrajectory timed(chain.chain, referenceLimits(config_), chain.startSpeed, 0.0);
   lastChainId_ = chain.id;
   chain_ = chain;
   timed_ = std::move(timed);
@@ -98,25 +125,35 @@ VelocityCommand LowLevelDrive::tick(const std::optional<OdometryReading>& latest
       break;
   }
   lastCommand_ = status_.state == DriveState::Braking ? wanted : rateLimited(wanted);
+  if (!inFlight_.empty()) {
+    inFlight_.pop_front();
+    inFlight_.push_back(lastCommand_);
+  }
   return lastCommand_;
 }
 
 VelocityCommand LowLevelDrive::track(const OdometryReading& reading) {
+  const double dt = config_.periodSeconds;
   const double t = reading.stamp - chain_->startTime;
-  if (t >= timed_->duration()) {
+  // The command acts from `acting` on, when the robot will be where the commands in flight take it.
+  const double acting = t + dt * static_cast<double>(inFlight_.size());
+  if (acting >= timed_->duration()) {
     status_.state = DriveState::Settling;
     return {};
   }
+  Pose2D robot = reading.pose;
+  for (const VelocityCommand& c : inFlight_) robot = afterCommand(robot, c, dt);
   const ReferenceState now = timed_->stateAt(t);
-  const ReferenceState next = timed_->stateAt(t + config_.periodSeconds);
-  const double dt = config_.periodSeconds;
-  const double v = (next.s - now.s) / dt;
-  const double w = normalizeAngle(next.pose.theta - now.pose.theta) / dt;
+  const ReferenceState from = inFlight_.empty() ? now : timed_->stateAt(acting);
+  const ReferenceState to = timed_->stateAt(acting + dt);
   status_.progress = now.s;
   status_.remainingSeconds = timed_->duration() - std::max(t, 0.0);
   status_.reference = now.pose;
   status_.lateralError = between(now.pose, reading.pose).y;
-  return controller_.command(reading.pose, now.pose, v, w);
+  // Feed-forward: the reference's mean speeds over the period the command is held.
+  const double v = (to.s - from.s) / dt;
+  const double w = normalizeAngle(to.pose.theta - from.pose.theta) / dt;
+  return controller_.command(robot, from.pose, v, w);
 }
 
 VelocityCommand LowLevelDrive::settle(const OdometryReading& reading, double wallSeconds) {
@@ -133,7 +170,7 @@ VelocityCommand LowLevelDrive::settle(const OdometryReading& reading, double wal
                         std::abs(lastCommand_.rotational) <= kSettleTurnRate;
   if ((atEnd && standing) || wallSeconds - settleStartWall_ > kSettleSeconds) {
     dropChain(DriveState::Idle);
-    status_.chainFinished = true;
+    status_.chainFinished = atEnd && standing;
     return {};
   }
   if (atEnd) return {};

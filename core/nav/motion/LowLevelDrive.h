@@ -9,12 +9,13 @@
 // on the odometry clock; feed-forward speeds are the reference's mean over the next tick, as the
 // base holds a command for one tick) -> Settling (the reference stands at the chain's end; the
 // robot creeps onto the end pose until within 1 cm and 0.5 deg at rest, or for at most 3 s) ->
-// Idle with chainFinished. Odometry loss or stop(): Braking (the chain is dropped; speeds fall
+// Idle with chainFinished (after 3 s short of the end: Idle without). Odometry loss or stop(): Braking (the chain is dropped; speeds fall
 // along the current curvature at the deceleration limits) -> Idle. Every command keeps within
 // the MotionLimits, including their accelerations from the previous command.
 #pragma once
 
 #include <cstdint>
+#include <deque>
 #include <optional>
 #include <string>
 
@@ -31,7 +32,19 @@ struct LowLevelDriveConfig {
   PostureGains gains;
   double periodSeconds = 0.05;          // one tick
   double odometryTimeoutSeconds = 0.3;  // no newer reading for this long (wall time): brake
+  // Ticks between an odometry reading and the base acting on the command computed from it
+  // (0-5). The drive predicts the robot's pose over the commands still in flight and tracks
+  // the reference that many ticks ahead (a Smith-predictor-like compensation of the delay).
+  int commandDelayTicks = 0;
+  // The reference accelerates, brakes and turns up at (1 - referenceMargin) times the limits'
+  // accelerations, so that the feedback has room within the full limits to catch up and to stop
+  // without overshooting (0 to 0.5).
+  double referenceMargin = 0.1;
 };
+
+// The limits the drive's reference moves within (see referenceMargin): the predicted time of a
+// chain is TimedTrajectory(chain, referenceLimits(config), startSpeed).duration().
+MotionLimits referenceLimits(const LowLevelDriveConfig& config);
 
 enum class DriveState { Idle, Tracking, Settling, Braking };
 std::string toString(DriveState state);
@@ -78,6 +91,7 @@ class LowLevelDrive {
   VelocityCommand lastCommand_;
   std::optional<OdometryReading> lastReading_;
   double lastReadingWall_ = 0.0;
+  std::deque<VelocityCommand> inFlight_;  // the last commandDelayTicks commands, oldest first
   double settleStartWall_ = 0.0;
   DriveStatus status_;
 };

@@ -1,11 +1,13 @@
 // Tests the Low-Level Drive closed-loop with the simulated robot at 20 Hz (no odometry noise):
 // it follows a chain and stops at its end within 2 cm and 1 degree, in about the predicted time;
-// it pulls a robot standing beside the chain onto it;
+// it pulls a robot standing beside the chain onto it; it predicts over commands that reach the
+// robot late;
 // it brakes within the limits when its odometry stops; a newer chain replaces the current one and
 // older ids are refused; without a chain and after stop() it stands.
 #include <cppunit/extensions/HelperMacros.h>
 
 #include <cmath>
+#include <deque>
 
 #include "core/common/Errors.h"
 #include "core/nav/motion/LowLevelDrive.h"
@@ -24,13 +26,8 @@ namespace {
 
 constexpr double kDt = 0.05;
 
-LowLevelDriveConfig driveConfig() {
-  LowLevelDriveConfig config;
-  config.limits.maxAcceleration = 0.45;
-  config.limits.maxDeceleration = 0.45;
-  config.limits.maxRotationalAcceleration = 1.4;
-  return config;
-}
+// The default limits are the simulated robot's.
+LowLevelDriveConfig driveConfig() { return LowLevelDriveConfig{}; }
 
 // A straight, a smooth left turn of 90 degrees, a straight.
 TrajectoryChain turnChain(const Pose2D& start) {
@@ -53,11 +50,14 @@ struct Rig {
   bool odometry = true;
   OdometryReading last;
   rgnav::VelocityCommand command;
+  std::deque<rgnav::VelocityCommand> inFlight;  // commands on their way to the robot
 
   void step() {
     if (odometry) last = {++readings, now, robot.pose(), robot.velocity().translational, robot.velocity().rotational};
     command = drive.tick(last, now);
-    robot.command(command);
+    inFlight.push_back(command);
+    robot.command(inFlight.front());
+    inFlight.pop_front();
     robot.step(kDt, grid);
     now += kDt;
   }
@@ -69,12 +69,21 @@ struct Rig {
   }
 };
 
+// The robot stands within 2 cm and 1 degree of the chain's end.
+void assertStandsAtEnd(const TrajectoryChain& chain, const DiffDriveRobot& robot) {
+  const Pose2D error = rgnav::between(chain.end(), robot.pose());
+  CPPUNIT_ASSERT(std::hypot(error.x, error.y) <= 0.02);
+  CPPUNIT_ASSERT(std::abs(error.theta) <= M_PI / 180.0);
+  CPPUNIT_ASSERT_EQUAL(0.0, robot.velocity().translational);
+}
+
 }  // namespace
 
 class LowLevelDriveTest : public CppUnit::TestFixture {
   CPPUNIT_TEST_SUITE(LowLevelDriveTest);
   CPPUNIT_TEST(stopsAtChainEnd);
   CPPUNIT_TEST(recoversFromOffset);
+  CPPUNIT_TEST(compensatesCommandDelay);
   CPPUNIT_TEST(brakesOnOdometryLoss);
   CPPUNIT_TEST(newerChainReplacesCurrent);
   CPPUNIT_TEST(standsWithoutChain);
@@ -86,7 +95,7 @@ class LowLevelDriveTest : public CppUnit::TestFixture {
     Rig rig;
     const TrajectoryChain chain = turnChain({});
     rig.drive.setChain({1, chain, 0.0, 0.0});
-    const double predicted = rgnav::TimedTrajectory(chain, driveConfig().limits).duration();
+    const double predicted = rgnav::TimedTrajectory(chain, rgnav::referenceLimits(driveConfig())).duration();
     double worstLateral = 0.0;
     while (!rig.drive.status().chainFinished && rig.now < 30.0) {
       rig.step();
@@ -95,9 +104,7 @@ class LowLevelDriveTest : public CppUnit::TestFixture {
     CPPUNIT_ASSERT(rig.drive.status().chainFinished);
     CPPUNIT_ASSERT(rig.drive.status().state == DriveState::Idle);
     CPPUNIT_ASSERT_DOUBLES_EQUAL(predicted, rig.now, 0.05 * predicted);
-    const Pose2D error = rgnav::between(chain.end(), rig.robot.pose());
-    CPPUNIT_ASSERT(std::hypot(error.x, error.y) <= 0.02);
-    CPPUNIT_ASSERT(std::abs(error.theta) <= M_PI / 180.0);
+    assertStandsAtEnd(chain, rig.robot);
     CPPUNIT_ASSERT(worstLateral < 0.02);
     // It stays there.
     for (int k = 0; k < 20; ++k) rig.step();
@@ -115,9 +122,26 @@ class LowLevelDriveTest : public CppUnit::TestFixture {
     CPPUNIT_ASSERT(rig.drive.status().state == DriveState::Tracking);
     CPPUNIT_ASSERT(std::abs(rig.drive.status().lateralError) < 0.005);
     rig.runUntilFinished(30.0);
-    const Pose2D error = rgnav::between(chain.end(), rig.robot.pose());
-    CPPUNIT_ASSERT(std::hypot(error.x, error.y) <= 0.02);
-    CPPUNIT_ASSERT(std::abs(error.theta) <= M_PI / 180.0);
+    assertStandsAtEnd(chain, rig.robot);
+  }
+
+  void compensatesCommandDelay() {
+    // The robot gets every command two ticks late; told so, the drive predicts over them (without
+    // the prediction this loop swings out by metres).
+    Rig rig;
+    LowLevelDriveConfig config = driveConfig();
+    config.commandDelayTicks = 2;
+    rig.drive = LowLevelDrive(config);
+    rig.inFlight.resize(2);
+    const TrajectoryChain chain = turnChain({});
+    rig.drive.setChain({1, chain, 0.0, 0.0});
+    double worstLateral = 0.0;
+    while (!rig.drive.status().chainFinished && rig.now < 30.0) {
+      rig.step();
+      worstLateral = std::max(worstLateral, std::abs(rig.drive.status().lateralError));
+    }
+    CPPUNIT_ASSERT(worstLateral < 0.01);
+    assertStandsAtEnd(chain, rig.robot);
   }
 
   void brakesOnOdometryLoss() {
@@ -154,7 +178,7 @@ class LowLevelDriveTest : public CppUnit::TestFixture {
     while (rig.now < 2.0) rig.step();
     // The replacement continues from where the reference is now, at its speed, and turns left.
     const rgnav::DriveStatus status = rig.drive.status();
-    const rgnav::TimedTrajectory timed(straight, driveConfig().limits);
+    const rgnav::TimedTrajectory timed(straight, rgnav::referenceLimits(driveConfig()));
     const double t = rig.now;
     const rgnav::ReferenceState from = timed.stateAt(t);
     const TrajectoryChain turn = turnChain(from.pose);
@@ -164,9 +188,7 @@ class LowLevelDriveTest : public CppUnit::TestFixture {
     CPPUNIT_ASSERT(status.progress > 0.5);
     rig.runUntilFinished(30.0);
     CPPUNIT_ASSERT(rig.drive.status().chainFinished);
-    const Pose2D error = rgnav::between(turn.end(), rig.robot.pose());
-    CPPUNIT_ASSERT(std::hypot(error.x, error.y) <= 0.02);
-    CPPUNIT_ASSERT(std::abs(error.theta) <= M_PI / 180.0);
+    assertStandsAtEnd(turn, rig.robot);
     // A chain it cannot brake on is refused and the drive goes on.
     TrajectoryChain stub;
     stub.append({rig.robot.pose(), 0.1, 0.0, 0.0});
@@ -196,6 +218,12 @@ class LowLevelDriveTest : public CppUnit::TestFixture {
     CPPUNIT_ASSERT_THROW(LowLevelDrive{config}, rgnav::ConfigError);
     config = {};
     config.gains.kx = -1.0;
+    CPPUNIT_ASSERT_THROW(LowLevelDrive{config}, rgnav::ConfigError);
+    config = {};
+    config.commandDelayTicks = 6;
+    CPPUNIT_ASSERT_THROW(LowLevelDrive{config}, rgnav::ConfigError);
+    config = {};
+    config.referenceMargin = 0.6;
     CPPUNIT_ASSERT_THROW(LowLevelDrive{config}, rgnav::ConfigError);
   }
 };

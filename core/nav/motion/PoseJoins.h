@@ -17,6 +17,9 @@
 //  - smoothPolyline: the planner's target poses (0.5-2 m apart, core/nav/planning/TargetSpacing)
 //    to one chain of straights and symmetric turns.
 //
+// The thesis' library also held conic and elliptic segments; clothoid turns and joins cover the
+// same uses with continuous curvature, so those are left out.
+//
 // Conventions: angles in radians, positive = left (counter-clockwise); curvature in 1/m;
 // sharpness (d curvature / d s) in 1/m^2. The velocity profile (TimedTrajectory) drives a
 // sharpness sigma at most at sqrt(maxRotationalAcceleration / sigma) m/s, a curvature k at most

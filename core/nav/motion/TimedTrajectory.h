@@ -4,7 +4,9 @@
 // acceleration (|sharpness v^2 + kappa a|) and the (de)acceleration limits, from a given start
 // speed to a given end speed (0: the chain ends at a standstill). Forward-backward passes over
 // the arc length on a fine grid; time by integrating ds / v. stateAt(t) is the reference the
-// Low-Level Drive tracks.
+// Low-Level Drive tracks. A curvature jump at a joint (a chain that is only G1, e.g. joined by
+// PoseJoins' clothoidJoin) is driven as it is: the rotational speed steps by v * (jump) there
+// and the drive's rate limit spreads the step, so curvature-continuous chains track best.
 #pragma once
 
 #include <vector>

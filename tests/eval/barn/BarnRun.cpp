@@ -49,6 +49,10 @@ BarnResult runBarnWorld(const std::string& worldYaml, const BarnSetup& setup) {
                              step.odometry.rotationalVelocity};
       const AvoidanceDecision decision = navigator.onScan(*step.scan, state);
       if (decision.chain) pending = decision.chain;
+      if (decision.stopNow) {
+        pending.reset();
+        drive.stop();
+      }
       result.blocked += decision.action == AvoidanceAction::Blocked;
       if (setup.trace && decision.action != AvoidanceAction::Keep)
         std::printf("# %s t=%.2f pose=(%.2f %.2f %.2f) v=%.2f targets=%zu %s: %s%s\n", result.name.c_str(),

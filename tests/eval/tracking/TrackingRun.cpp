@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <deque>
 
 #include "core/sim/motion/DiffDriveRobot.h"
 
@@ -30,22 +31,26 @@ OccupancyGrid freeGridAround(const TrajectoryChain& chain) {
 }  // namespace
 
 TrackingResult runTracking(const TrackingCase& trackingCase, LowLevelDriveConfig config, LoopClock& clock,
-                           std::uint64_t& odometryId) {
+                           std::uint64_t& odometryId, int commandDelayTicks) {
   config.limits.maxVelocity = trackingCase.maxVelocity;
+  config.commandDelayTicks = commandDelayTicks;
   LowLevelDrive drive(config);
   const OccupancyGrid grid = freeGridAround(trackingCase.chain);
   DiffDriveRobot robot(DiffDriveConfig{}, trackingCase.chain.start());
   TrackingResult result;
-  result.predictedSeconds = TimedTrajectory(trackingCase.chain, config.limits).duration();
+  result.predictedSeconds = TimedTrajectory(trackingCase.chain, referenceLimits(config)).duration();
   const double start = clock.now();
   drive.setChain({1, trackingCase.chain, 0.0, start});
+  std::deque<VelocityCommand> inFlight(static_cast<std::size_t>(commandDelayTicks));
   double squares = 0.0;
   std::size_t samples = 0;
   while (clock.now() - start <= 2.0 * result.predictedSeconds + 5.0) {
     const double now = clock.now();
     const OdometryReading reading{++odometryId, now, robot.pose(), robot.velocity().translational,
                                   robot.velocity().rotational};
-    robot.command(drive.tick(reading, now));
+    inFlight.push_back(drive.tick(reading, now));
+    robot.command(inFlight.front());
+    inFlight.pop_front();
     const DriveStatus status = drive.status();
     if (status.chainFinished) {
       result.finished = true;

@@ -22,8 +22,9 @@ struct TrackingResult {
   double finalYawError = 0.0;       // rad
 };
 
-// `config.limits.maxVelocity` is replaced by the case's top speed.
+// `config.limits.maxVelocity` is replaced by the case's top speed. `commandDelayTicks`: the robot
+// receives each command that many ticks late (0: at once), and the drive is told so.
 TrackingResult runTracking(const TrackingCase& trackingCase, LowLevelDriveConfig config, LoopClock& clock,
-                           std::uint64_t& odometryId);
+                           std::uint64_t& odometryId, int commandDelayTicks);
 
 }  // namespace rgnav

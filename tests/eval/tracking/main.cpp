@@ -7,14 +7,17 @@
 //             loop_period_p99_ms=…
 // with the worst chain's RMS lateral error, the worst final errors, the largest relative
 // difference between the predicted and the real time to drive a chain (start to standing at
-// its end) and the 99th percentile of the loop's periods. The drive's limits are a little below
-// the simulated robot's (0.5 m/s^2, pi/2 rad/s, pi/2 rad/s^2) so that feedback has room.
+// its end) and the 99th percentile of the loop's periods. The drive's limits are the simulated
+// robot's (0.5 m/s^2, pi/2 rad/s, pi/2 rad/s^2); its reference keeps a 10 % margin on the
+// accelerations (LowLevelDriveConfig::referenceMargin). --command-delay N hands the robot each
+// command N ticks late and tells the drive, which then predicts over the commands in flight.
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <iostream>
 
 #include "core/common/Errors.h"
+#include "core/sim/motion/DiffDriveRobot.h"
 #include "tests/eval/tracking/LoopClock.h"
 #include "tests/eval/tracking/TrackingRun.h"
 #include "tests/eval/tracking/TrackingSuite.h"
@@ -26,18 +29,22 @@ namespace po = boost::program_options;
 int main(int argc, char** argv) {
   bool fast = false;
   std::size_t chains = 0;
-  po::options_description desc("rgnav-eval-tracking [--fast] [--chains N]");
+  int delay = 0;
+  po::options_description desc("rgnav-eval-tracking [--fast] [--chains N] [--command-delay N]");
   desc.add_options()
       ("help", "this text")
       ("fast", po::bool_switch(&fast), "simulated time only, no sleeping (loop periods are nominal)")
-      ("chains", po::value(&chains)->default_value(0), "drive only the first N chains of the suite (0: all)");
+      ("chains", po::value(&chains)->default_value(0), "drive only the first N chains of the suite (0: all)")
+      ("command-delay", po::value(&delay)->default_value(0), "the robot receives each command N ticks late");
   try {
     if (!rgnav::parseCommandLine(argc, argv, desc)) return 0;
+    // The simulated robot's limits; the reference keeps the default 10 % margin on accelerations.
     rgnav::LowLevelDriveConfig config;
-    config.limits.maxAcceleration = 0.45;
-    config.limits.maxDeceleration = 0.45;
-    config.limits.maxRotationalVelocity = 1.4;
-    config.limits.maxRotationalAcceleration = 1.4;
+    const rgnav::DiffDriveConfig robot;
+    config.limits.maxAcceleration = robot.maxTranslationalAcceleration;
+    config.limits.maxDeceleration = robot.maxTranslationalAcceleration;
+    config.limits.maxRotationalVelocity = robot.maxRotationalVelocity;
+    config.limits.maxRotationalAcceleration = robot.maxRotationalAcceleration;
     config.limits.maxLateralAcceleration = 1.0;
     std::vector<rgnav::TrackingCase> suite = rgnav::trackingSuite();
     if (chains > 0 && chains < suite.size()) suite.resize(chains);
@@ -46,7 +53,7 @@ int main(int argc, char** argv) {
     double rms = 0.0, position = 0.0, yaw = 0.0, timeError = 0.0;
     std::size_t unfinished = 0;
     for (const rgnav::TrackingCase& c : suite) {
-      const rgnav::TrackingResult r = rgnav::runTracking(c, config, clock, odometryId);
+      const rgnav::TrackingResult r = rgnav::runTracking(c, config, clock, odometryId, delay);
       const double relative = r.finished ? std::abs(r.realSeconds - r.predictedSeconds) / r.predictedSeconds : 1.0;
       std::printf("chain=%s v_max=%.1f length_m=%.2f predicted_s=%.2f real_s=%.2f time_err=%.4f rms_lateral_m=%.4f"
                   " max_lateral_m=%.4f final_pos_err_m=%.4f final_yaw_err_deg=%.3f finished=%d\n",
