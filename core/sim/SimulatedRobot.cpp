@@ -114,9 +114,20 @@ bool SimulatedRobot::tourFinished() {
   return tour_ && tour_->finished();
 }
 
-std::uint64_t SimulatedRobot::collisions() {
+std::uint64_t SimulatedRobot::robotCollisions() {
   std::lock_guard lock(mutex_);
-  return simulation_.collisions();
+  return simulation_.robotCollisions();
+}
+
+std::uint64_t SimulatedRobot::personBumps() {
+  std::lock_guard lock(mutex_);
+  return simulation_.personBumps();
+}
+
+std::vector<Person> SimulatedRobot::people() {
+  std::lock_guard lock(mutex_);
+  const std::span<const Person> people = simulation_.people();
+  return {people.begin(), people.end()};
 }
 
 double SimulatedRobot::simulatedSeconds() {

@@ -56,7 +56,11 @@ class SimulatedRobot : public LaserStream, public BaseStream {
   std::vector<DoorLine> doorLines() const;
 
   bool tourFinished();
-  std::uint64_t collisions();
+  // Simulation::robotCollisions and personBumps.
+  std::uint64_t robotCollisions();
+  std::uint64_t personBumps();
+  // Where the people are now (empty without people).
+  std::vector<Person> people();
   double simulatedSeconds();
 
  private:

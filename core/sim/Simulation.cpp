@@ -1,6 +1,7 @@
 // Stepping the simulated robot, odometry and laser (see Simulation.h).
 #include "core/sim/Simulation.h"
 
+#include <cmath>
 #include <string>
 
 #include "core/common/Errors.h"
@@ -12,6 +13,7 @@ namespace {
 // never changes what another produces.
 constexpr std::uint64_t kOdometryStream = 0x9e3779b97f4a7c15ULL;
 constexpr std::uint64_t kLaserStream = 0xbf58476d1ce4e5b9ULL;
+constexpr std::uint64_t kPeopleStream = 0x94d049bb133111ebULL;
 
 }  // namespace
 
@@ -20,6 +22,7 @@ void validate(const SimulationConfig& config) {
   if (config.stepsPerScan < 1) throw ConfigError("simulation: steps_per_scan must be at least 1");
   validate(config.robot);
   validate(config.odometry);
+  validate(config.people);
 }
 
 Simulation::Simulation(const OccupancyGrid& world, const SimulationConfig& config, const Pose2D& start, Timestamp startTime)
@@ -35,12 +38,33 @@ Simulation::Simulation(const OccupancyGrid& world, const SimulationConfig& confi
   if (robot_.collidesAt(start, world_))
     throw InvalidArgumentError("simulation: the start pose (" + std::to_string(start.x) + ", " +
                                std::to_string(start.y) + ") is not free for the robot");
+  if (config_.people.count > 0)
+    crowd_.emplace(world_, config_.people, config_.people.seed.value_or(config_.seed ^ kPeopleStream),
+                   config_.robot.footprint, start);
+}
+
+std::span<const Person> Simulation::people() const {
+  if (!crowd_) return {};
+  return crowd_->people();
+}
+
+std::span<const DiskObstacle> Simulation::peopleObstacles() const {
+  if (!crowd_) return {};
+  return crowd_->obstacles();
 }
 
 SimulationStep Simulation::step() {
   const Pose2D before = robot_.pose();
-  const bool collided = robot_.step(config_.stepSeconds, world_) == StepOutcome::Collided;
-  collisions_ += collided;
+  const bool drove = robot_.step(config_.stepSeconds, world_, peopleObstacles()) == StepOutcome::Collided;
+  // People walk on with the robot at its new pose; whoever would touch it stops short.
+  const int walkedInto = crowd_ ? crowd_->step(config_.stepSeconds, config_.robot.footprint, robot_.pose()) : 0;
+  const bool moving = drove || std::abs(robot_.velocity().translational) > kStillSpeed ||
+                      std::abs(robot_.velocity().rotational) > kStillRotation;
+  // One collision per step however many things the robot met (driving into a person and that
+  // person stepping on into it are one encounter); each person walking into it standing is a bump.
+  const bool collided = drove || (moving && walkedInto > 0);
+  robotCollisions_ += collided;
+  personBumps_ += moving ? 0 : static_cast<std::uint64_t>(walkedInto);
   odometryPose_ = odometryNoise_.advance(odometryPose_, before, robot_.pose());
   time_ += config_.stepSeconds;
   ++steps_;
@@ -48,11 +72,12 @@ SimulationStep Simulation::step() {
   SimulationStep out;
   out.truePose = robot_.pose();
   out.collided = collided;
+  out.bumped = !moving && walkedInto > 0;
   out.odometry = OdometryReading{nextOdometryId_++, time_, odometryPose_, robot_.velocity().translational,
                                  robot_.velocity().rotational};
   if (steps_ % static_cast<std::uint64_t>(config_.stepsPerScan) == 0) {
     const DataId id = scanTruePoses_.size() + 1;
-    out.scan = laser_.simulate(robot_.pose(), odometryPose_, id, time_, raycaster_, laserRng_);
+    out.scan = laser_.simulate(robot_.pose(), odometryPose_, id, time_, raycaster_, laserRng_, peopleObstacles());
     scanTruePoses_.push_back(robot_.pose());
   }
   return out;

@@ -77,6 +77,15 @@ void readLaser(const ConfigNode& node, LaserConfig& laser) {
   read(node, "dropout_probability", laser.dropoutProbability);
 }
 
+void readPeople(const ConfigNode& node, PeopleConfig& people) {
+  node.expectKeys({"count", "radius_m", "min_speed_mps", "max_speed_mps", "seed"});
+  if (node.has("count")) people.count = static_cast<int>(node["count"].asInteger(0, 10000));
+  read(node, "radius_m", people.radius);
+  read(node, "min_speed_mps", people.minSpeed);
+  read(node, "max_speed_mps", people.maxSpeed);
+  if (node.has("seed")) people.seed = static_cast<std::uint64_t>(node["seed"].asInteger(0, INT64_MAX));
+}
+
 }  // namespace
 
 SimulationConfig parseSimulationConfig(const std::string& yamlText) {
@@ -90,13 +99,14 @@ SimulationConfig parseSimulationConfig(const std::string& yamlText) {
   if (document.IsNull()) return config;
   const ConfigVars noVariables;
   const ConfigNode root(document, "", noVariables);
-  root.expectKeys({"step_s", "steps_per_scan", "seed", "robot", "odometry", "laser"});
+  root.expectKeys({"step_s", "steps_per_scan", "seed", "robot", "odometry", "laser", "people"});
   read(root, "step_s", config.stepSeconds);
   if (root.has("steps_per_scan")) config.stepsPerScan = static_cast<int>(root["steps_per_scan"].asInteger(1, 1000));
   if (root.has("seed")) config.seed = static_cast<std::uint64_t>(root["seed"].asInteger(0, INT64_MAX));
   if (root.has("robot")) readRobot(root["robot"], config.robot);
   if (root.has("odometry")) readOdometry(root["odometry"], config.odometry);
   if (root.has("laser")) readLaser(root["laser"], config.laser);
+  if (root.has("people")) readPeople(root["people"], config.people);
   validate(config);
   LaserModel{config.laser};  // validates the laser
   return config;

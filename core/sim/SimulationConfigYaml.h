@@ -7,6 +7,8 @@
 //   odometry: {alpha1, alpha2, alpha3, alpha4, translation_scale_error, rotation_bias_rad_per_m}
 //   laser:    {field_of_view_deg, resolution_deg, max_range_m, mounting_height_m, forward_offset_m,
 //              range_noise_sigma_m, dropout_probability}
+//   people:   {count, radius_m, min_speed_mps, max_speed_mps, seed}   (walking people; seed
+//              defaults to one derived from the simulation's)
 // Every key is optional; missing ones keep the defaults of SimulationConfig.
 #pragma once
 

@@ -97,7 +97,7 @@ class SimulationTest : public CppUnit::TestFixture {
     Simulation simulation(world.grid, SimulationConfig{}, {4.0, 1.0, 0.0});
     simulation.command({1.0, 0.0});
     for (int i = 0; i < 200; ++i) simulation.step();
-    CPPUNIT_ASSERT(simulation.collisions() > 0);
+    CPPUNIT_ASSERT(simulation.robotCollisions() > 0);
     CPPUNIT_ASSERT(simulation.truePose().x < 4.9 - 0.25 + 0.05);
   }
   void startInsideAWallIsRefused() {

@@ -27,7 +27,7 @@ TourRunResult runTour(Simulation& simulation, TourDriver& driver, const GroundTr
   for (std::size_t i = result.roomsVisited.size() + result.roomsMissed.size(); i < visits.size(); ++i)
     result.roomsMissed.push_back(visits[i].room);
   result.finished = result.roomsMissed.empty();
-  result.collisions = simulation.collisions();
+  result.collisions = simulation.robotCollisions();
   result.seconds = simulation.time() - start;
   return result;
 }

@@ -3,7 +3,10 @@
 // floor plan image, a map_server YAML or a vector world. The robot follows velocity commands
 // (Base::setVelocity) or drives a tour through every ground-truth room (--tour). Clocks: real
 // time, or lock-step (it advances when a laser consumer asks for the next scan: as fast as the
-// consumers allow, deterministic for a seed). --record writes the run as a CARMEN log.
+// consumers allow, deterministic for a seed). --record writes the run as a CARMEN log. --people N
+// lets N people walk through the world (moving obstacles); the module's health counts
+// robot_collisions (the robot drove into a wall or person) and person_bumps (a person walked into
+// the robot standing still).
 #include <atomic>
 #include <fstream>
 #include <iostream>
@@ -42,6 +45,7 @@ int main(int argc, char** argv) {
   std::string world, config, start, clock, record, laserObject, baseObject, truthObject;
   bool tour = false;
   long long seed = -1;
+  int people = -1;
   std::size_t buffer = 0;
   std::uint32_t maxBatch = 0;
   po::options_description options("Simulator options");
@@ -49,6 +53,7 @@ int main(int argc, char** argv) {
       ("world", po::value(&world)->required(), "floor plan image (.png/.pgm), map_server .yaml or vector world .yaml")
       ("config", po::value(&config)->default_value(""), "simulation parameters (config/sim/*.yaml); built-in defaults if empty")
       ("seed", po::value(&seed)->default_value(-1), "overrides the configured seed")
+      ("people", po::value(&people)->default_value(-1), "people walking through the world (overrides the configured count)")
       ("clock", po::value(&clock)->default_value("realtime"), "realtime or lockstep")
       ("tour", po::bool_switch(&tour), "drive a tour through every ground-truth room (else: follow setVelocity)")
       ("start", po::value(&start)->default_value(""), "x,y,theta; default: the world's task start, else the free cell farthest from walls")
@@ -64,6 +69,7 @@ int main(int argc, char** argv) {
   const int code = runServer(argc, argv, options, [&](ServerRuntime& runtime) {
     SimulationConfig simulation = config.empty() ? SimulationConfig{} : loadSimulationConfig(config);
     if (seed >= 0) simulation.seed = static_cast<std::uint64_t>(seed);
+    if (people >= 0) simulation.people.count = people;
     LoadedWorld loaded = loadWorld(world);
     const Pose2D startPose = !start.empty() ? parsePose(start) : loaded.task ? loaded.task->start : openestPose(loaded.grid);
     std::optional<Tour> route;
@@ -84,7 +90,8 @@ int main(int argc, char** argv) {
     runtime.activate(baseObject, new BaseImpl(runtime, robot, maxBatch));
     runtime.activate(truthObject, new GroundTruthImpl(runtime, robot));
     runtime.health().addReporter([robot](ModuleHealth& health) {
-      health.set("collisions", robot->collisions());
+      health.set("robot_collisions", robot->robotCollisions());
+      health.set("person_bumps", robot->personBumps());
       health.set("simulated_ms", static_cast<std::uint64_t>(robot->simulatedSeconds() * 1000));
     });
     if (robotOptions.clock == SimClock::RealTime) {
@@ -102,7 +109,7 @@ int main(int argc, char** argv) {
       });
     }
     std::cerr << "simulating " << world << " (" << clock << (tour ? ", tour" : ", velocity commands") << ", seed "
-              << simulation.seed << ") serving on " << runtime.server().endpoint.str() << std::endl;
+              << simulation.seed << ", " << simulation.people.count << " people) serving on " << runtime.server().endpoint.str() << std::endl;
   });
   if (ticker.joinable()) {
     stop = true;

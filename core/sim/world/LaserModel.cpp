@@ -1,7 +1,9 @@
-// LaserModel: configuration checks, true ranges from the raycaster, noise and dropouts.
+// LaserModel: configuration checks, true ranges from the raycaster and the round obstacles, noise
+// and dropouts.
 #include "core/sim/world/LaserModel.h"
 
 #include "core/common/Errors.h"
+#include "core/sim/world/DiskRaycast.h"
 
 namespace rgnav {
 namespace {
@@ -34,7 +36,8 @@ Pose2D LaserModel::laserPose(const Pose2D& robotPose) const {
 }
 
 LaserScan LaserModel::simulate(const Pose2D& robotTruePose, const Pose2D& odometryPose, DataId id, Timestamp stamp,
-                               const Raycaster& raycaster, std::mt19937_64& rng) const {
+                               const Raycaster& raycaster, std::mt19937_64& rng,
+                               std::span<const DiskObstacle> obstacles) const {
   LaserScan scan;
   scan.id = id;
   scan.stamp = stamp;
@@ -45,6 +48,13 @@ LaserScan LaserModel::simulate(const Pose2D& robotTruePose, const Pose2D& odomet
   scan.maxRange = config_.maxRange;
   scan.ranges.resize(beamCount_);
   raycaster.scan(scan.sensorPose, scan.startAngle, scan.angleIncrement, scan.maxRange, scan.ranges);
+  for (const DiskObstacle& obstacle : obstacles) {
+    for (std::size_t i = 0; i < beamCount_; ++i) {
+      const double angle = scan.sensorPose.theta + scan.startAngle + static_cast<double>(i) * scan.angleIncrement;
+      const double hit = castToDisk({scan.sensorPose.x, scan.sensorPose.y}, angle, obstacle);
+      if (hit <= scan.maxRange && hit < scan.ranges[i]) scan.ranges[i] = static_cast<float>(hit);
+    }
+  }
 
   std::normal_distribution<double> noise(0.0, 1.0);
   std::uniform_real_distribution<double> uniform(0.0, 1.0);

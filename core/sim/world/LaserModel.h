@@ -2,14 +2,17 @@
 // 220 facing forward about 0.40 m above the floor). Beams span the field of view including both
 // ends (181 at 1 degree, 361 at 0.5 degree), starting at -fov/2 (the robot's right). Each range
 // gets Gaussian noise; a dropout is a beam without return. Ranges follow REP 117 (SensorData.h):
-// +inf for no return within maxRange.
+// +inf for no return within maxRange. Beams see the world grid and round obstacles beside it
+// (people, DiskObstacle.h).
 #pragma once
 
 #include <cmath>
 #include <cstddef>
 #include <random>
+#include <span>
 
 #include "core/common/SensorData.h"
+#include "core/sim/world/DiskObstacle.h"
 #include "core/sim/world/Raycaster.h"
 
 namespace rgnav {
@@ -38,9 +41,10 @@ class LaserModel {
 
   // A scan taken at the robot's true pose, stamped with the odometry pose it is reported at.
   // sensorPose is the true laser pose. Draws from `rng` in a fixed order, so the same seed
-  // gives the same scans.
+  // gives the same scans. `obstacles` are seen where they are nearer than the grid.
   LaserScan simulate(const Pose2D& robotTruePose, const Pose2D& odometryPose, DataId id, Timestamp stamp,
-                     const Raycaster& raycaster, std::mt19937_64& rng) const;
+                     const Raycaster& raycaster, std::mt19937_64& rng,
+                     std::span<const DiskObstacle> obstacles = {}) const;
 
  private:
   LaserConfig config_;

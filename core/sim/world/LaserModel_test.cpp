@@ -1,10 +1,12 @@
 // Tests the simulated laser: beam layout (181 / 361 beams over 180 degrees), scan fields and
 // the laser's mounting offset, Gaussian range noise (mean and standard deviation of the range
-// errors within sampling error), the dropout rate, max range, seeding, and bad configurations.
+// errors within sampling error), the dropout rate, max range, seeding, bad configurations, and
+// round obstacles (people): the exact ray-circle distance, and the laser seeing a person.
 #include <cppunit/extensions/HelperMacros.h>
 
 #include <cmath>
 
+#include "core/sim/world/DiskRaycast.h"
 #include "core/sim/world/LaserModel.h"
 
 using namespace rgnav;
@@ -46,6 +48,8 @@ class LaserModelTest : public CppUnit::TestFixture {
   CPPUNIT_TEST(beyondMaxRangeIsNoReturn);
   CPPUNIT_TEST(sameSeedSameScans);
   CPPUNIT_TEST(badConfigurationsAreRejected);
+  CPPUNIT_TEST(rayCircleDistanceIsExact);
+  CPPUNIT_TEST(theLaserSeesAPerson);
   CPPUNIT_TEST_SUITE_END();
 
  public:
@@ -161,6 +165,45 @@ class LaserModelTest : public CppUnit::TestFixture {
     rejected([](LaserConfig& c) { c.dropoutProbability = 1.5; });
     rejected([](LaserConfig& c) { c.dropoutProbability = std::nan(""); });
     rejected([](LaserConfig& c) { c.mountingHeight = 0.0; });
+  }
+
+  void rayCircleDistanceIsExact() {
+    const DiskObstacle person{{3.0, 1.0}, 0.25};
+    CPPUNIT_ASSERT_DOUBLES_EQUAL(2.75, castToDisk({0.0, 1.0}, 0.0, person), 1e-12);
+    // Straight down onto the top of the disk.
+    CPPUNIT_ASSERT_DOUBLES_EQUAL(1.75, castToDisk({3.0, 3.0}, -M_PI / 2.0, person), 1e-12);
+    // Off-centre: a beam along y = 1.15 meets the circle at x = 3 - sqrt(0.25^2 - 0.15^2) = 2.8.
+    CPPUNIT_ASSERT_DOUBLES_EQUAL(2.8, castToDisk({0.0, 1.15}, 0.0, person), 1e-12);
+    // Grazing (y = 1.25), passing beside, pointing away, and starting inside.
+    CPPUNIT_ASSERT(std::isinf(castToDisk({0.0, 1.25}, 0.0, person)));
+    CPPUNIT_ASSERT(std::isinf(castToDisk({0.0, 1.3}, 0.0, person)));
+    CPPUNIT_ASSERT(std::isinf(castToDisk({0.0, 1.0}, M_PI, person)));
+    CPPUNIT_ASSERT_EQUAL(0.0, castToDisk({3.1, 1.0}, 0.7, person));
+  }
+
+  void theLaserSeesAPerson() {
+    const LaserModel laser(halfDegree(0.0, 0.0));  // 0.2 m ahead of the robot centre
+    const Raycaster raycaster(room());
+    const Pose2D robot{2.0, 4.0, 0.0};             // laser at (2.2, 4), the wall 9.75 m ahead
+    const DiskObstacle person{{5.2, 4.0}, 0.25};
+    std::mt19937_64 rng(1);
+    const LaserScan without = laser.simulate(robot, robot, 1, 0.0, raycaster, rng);
+    const LaserScan with = laser.simulate(robot, robot, 2, 0.0, raycaster, rng, std::span(&person, 1));
+    const std::size_t ahead = 180;  // of 361 beams from -90 degrees: straight ahead
+    CPPUNIT_ASSERT_DOUBLES_EQUAL(9.75, without.ranges[ahead], 1e-4);
+    CPPUNIT_ASSERT_DOUBLES_EQUAL(2.75, with.ranges[ahead], 1e-4);
+    // The person covers asin(0.25 / 3) = 4.78 degrees either side: 9 half-degree beams each way.
+    int shortened = 0;
+    for (std::size_t i = 0; i < with.ranges.size(); ++i) {
+      if (with.ranges[i] < without.ranges[i]) {
+        ++shortened;
+        CPPUNIT_ASSERT(i >= ahead - 9 && i <= ahead + 9);
+        CPPUNIT_ASSERT(with.ranges[i] >= 2.75f - 1e-4f && with.ranges[i] <= 3.0f);
+      } else {
+        CPPUNIT_ASSERT_EQUAL(without.ranges[i], with.ranges[i]);
+      }
+    }
+    CPPUNIT_ASSERT_EQUAL(19, shortened);
   }
 };
 CPPUNIT_TEST_SUITE_REGISTRATION(LaserModelTest);
