@@ -262,6 +262,7 @@ void AvoidanceService::decide(const DriveRecord& drive, std::uint64_t generation
   const ObstacleGrid grid = obstacles_.grid();
   const AvoidanceDecision decision = core_->update(state, std::span<const ObstacleGrid>(&grid, 1));
   if (decision.chain) send(*decision.chain);
+  if (decision.stopNow) lld_.stop();
   switch (decision.action) {
     case AvoidanceAction::Drive: record(generation, DrivePhase::Driving); break;
     case AvoidanceAction::Wait: record(generation, DrivePhase::Waiting, decision.reason); break;

@@ -19,11 +19,8 @@ std::string poseArgument(const Pose2D& p) {
 }
 
 std::vector<std::string> simulatorCommand(const CrowdSetOptions& o) {
-  std::vector<std::string> command{TestCluster::program("rgnav-sim"), "--world", o.world, "--config", o.simConfig,
-                                   "--clock", "realtime", "--start", poseArgument(o.start),
-                                   "--seed", std::to_string(o.seed)};
-  if (o.people > 0) command.insert(command.end(), {"--people", std::to_string(o.people)});
-  return command;
+  return {TestCluster::program("rgnav-sim"), "--world", o.world, "--config", o.simConfig, "--clock", "realtime",
+          "--start", poseArgument(o.start), "--people", std::to_string(o.people), "--seed", std::to_string(o.seed)};
 }
 
 }  // namespace
