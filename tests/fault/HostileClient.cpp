@@ -59,7 +59,7 @@ std::vector<std::string> HostileTally::notes() const {
 }
 
 HostileClient::HostileClient(const ClientSettings& settings, const HostPort& watchdog, ExportTraps traps,
-                             bool groundTruth, bool pathPlanning, unsigned seed)
+                             bool groundTruth, bool demoModules, unsigned seed)
     : laser_("Laser", settings),
       base_("Base", settings),
       groundTruth_("GroundTruth", settings),
@@ -67,6 +67,7 @@ HostileClient::HostileClient(const ClientSettings& settings, const HostPort& wat
       detection_("GatewayDetection", settings),
       kernel_("RGMappingKernel", settings),
       planning_("PathPlanning", settings),
+      drive_("LowLevelDrive", settings),
       watchdog_("Watchdog", settings, watchdog),
       requests_(std::uint64_t(seed) << 32) {
   addSensorCalls();
@@ -74,7 +75,10 @@ HostileClient::HostileClient(const ClientSettings& settings, const HostPort& wat
   addScanMapperCalls();
   addDetectionCalls();
   addKernelCalls(traps);
-  if (pathPlanning) addPathPlanningCalls();
+  if (demoModules) {
+    addPathPlanningCalls();
+    addLowLevelDriveCalls();
+  }
   addWatchdogCalls();
   next_ = seed % calls_.size();
 }
@@ -258,6 +262,39 @@ void HostileClient::addPathPlanningCalls() {
       [this](P p) { return p->replanDoorBlocked(requestId(), 0); }, once);
   add(c, planning_, "PathPlanning.replanDoorBlocked(no plan)",
       [this](P p) { return p->replanDoorBlocked(requestId(), kHugeId); }, once);
+}
+
+void HostileClient::addLowLevelDriveCalls() {
+  std::vector<HostileCall>& c = calls_;
+  using D = RGNav::LowLevelDrive_ptr;
+  const RGNav::TrajectorySegment straight{{1.5, 7.0, 0.0}, 1.0, 0.0, 0.0};
+  // A chain of `segments` (the straight by default), with one field of it spoilt by `spoil`.
+  auto chain = [straight](std::function<void(RGNav::DriveChain&)> spoil, CORBA::ULong segments = 1) {
+    RGNav::DriveChain out{kHugeId, {}, 0.0, {0, 0}};
+    out.segments.length(segments);
+    for (CORBA::ULong i = 0; i < segments; ++i) out.segments[i] = straight;
+    spoil(out);
+    return out;
+  };
+  const std::vector<std::pair<std::string, RGNav::DriveChain>> chains{
+      {"id 0", chain([](RGNav::DriveChain& d) { d.id = 0; })},
+      {"NaN start", chain([](RGNav::DriveChain& d) { d.segments[0].start.x = kNaN; })},
+      {"inf curvature", chain([](RGNav::DriveChain& d) { d.segments[0].curvature = kInf; })},
+      {"negative length", chain([](RGNav::DriveChain& d) { d.segments[0].length = -1.0; })},
+      {"no segments", chain([](RGNav::DriveChain&) {}, 0)},
+      {"too many segments", chain([](RGNav::DriveChain&) {}, RGNav::MAX_CHAIN_SEGMENTS + 1)},
+      {"gap", chain([](RGNav::DriveChain&) {}, 2)},  // the second straight starts where the first did
+      {"inf start speed", chain([](RGNav::DriveChain& d) { d.startSpeed = kInf; })},
+      {"start speed beyond the limits", chain([](RGNav::DriveChain& d) { d.startSpeed = 1e6; })},
+      {"bad nsec", chain([](RGNav::DriveChain& d) { d.startTime.nsec = 2000000000u; })}};
+  add(c, drive_, "LowLevelDrive.ping", [](D d) { d->ping(); });
+  add(c, drive_, "LowLevelDrive.status", [](D d) { return d->status(); });
+  add(c, drive_, "LowLevelDrive.driveStatus", [](D d) { return d->driveStatus(); });
+  add(c, drive_, "LowLevelDrive.limits", [](D d) { return d->limits(); });
+  // Stopping a drive that stands by changes nothing.
+  add(c, drive_, "LowLevelDrive.stop", [](D d) { d->stop(); });
+  for (const auto& [what, bad] : chains)
+    add(c, drive_, "LowLevelDrive.setChain(" + what + ")", [bad](D d) { d->setChain(bad); });
 }
 
 void HostileClient::addWatchdogCalls() {

@@ -1,8 +1,8 @@
 // HostileClient: a remote caller that calls every operation of every server of the mapping set
 // (the simulator's or a log playback's Laser and Base, the simulator's GroundTruth, ScanMapper,
-// GatewayDetection, the RG Mapping Kernel, the demo set's PathPlanning module and the watchdog) with arguments no well-behaved client sends: NaN and infinite coordinates, IDs 0 and
+// GatewayDetection, the RG Mapping Kernel, the demo set's PathPlanning and LowLevelDrive modules and the watchdog) with arguments no well-behaved client sends: NaN and infinite coordinates, IDs 0 and
 // 2^64-1, counts of 2^32-1, names with control characters or over the length bound, request ID
-// 0, merges of a region with itself and with a region that does not exist, undoing merges into
+// 0, chains of trajectory segments that are not finite, do not join or are too long, merges of a region with itself and with a region that does not exist, undoing merges into
 // regions that do not exist, exports to /etc, to
 // a directory behind a symbolic link and over a symbolic link, and unknown watchdog modules.
 // None of them may change the map: valid names, merges and module control are not among them.
@@ -21,6 +21,7 @@
 #include "GatewayDetection.hh"
 #include "GroundTruth.hh"
 #include "Laser.hh"
+#include "LowLevelDrive.hh"
 #include "PathPlanning.hh"
 #include "RGMappingKernel.hh"
 #include "ScanMapper.hh"
@@ -61,10 +62,10 @@ class HostileClient {
  public:
   // One client per thread; `seed` sets where its request IDs and its turn through the calls start,
   // so that threads send the same calls at different times.
-  // groundTruth: the set has a simulator, whose GroundTruth object is called too; pathPlanning:
-  // the set has the PathPlanning module (the demo set), called too.
+  // groundTruth: the set has a simulator, whose GroundTruth object is called too; demoModules:
+  // the set has the PathPlanning and LowLevelDrive modules (the demo set), called too.
   HostileClient(const ClientSettings& settings, const HostPort& watchdog, ExportTraps traps, bool groundTruth,
-                bool pathPlanning, unsigned seed);
+                bool demoModules, unsigned seed);
   HostileClient(const HostileClient&) = delete;  // its calls refer to its connections
   HostileClient& operator=(const HostileClient&) = delete;
 
@@ -79,6 +80,7 @@ class HostileClient {
   void addDetectionCalls();
   void addKernelCalls(const ExportTraps& traps);
   void addPathPlanningCalls();
+  void addLowLevelDriveCalls();
   void addWatchdogCalls();
   std::uint64_t requestId() { return ++requests_; }
 
@@ -89,6 +91,7 @@ class HostileClient {
   TypedConnection<RGNav::GatewayDetection> detection_;
   TypedConnection<RGNav::RGMappingKernel> kernel_;
   TypedConnection<RGNav::PathPlanning> planning_;
+  TypedConnection<RGNav::LowLevelDrive> drive_;
   TypedConnection<RGNav::Watchdog> watchdog_;
   std::vector<HostileCall> calls_;
   std::size_t next_ = 0;

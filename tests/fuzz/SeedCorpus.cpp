@@ -185,7 +185,8 @@ int main(int argc, char** argv) {
     seeds.copyYaml("vector_world", root / "config/worlds");
     seeds.copyYaml("simulation_config", root / "config/sim");
     // The module_config target's first byte picks the module.
-    const std::vector<std::string> modules = {"scanmapper", "gatewaydetection", "rgmappingkernel", "pathplanning"};
+    const std::vector<std::string> modules = {"scanmapper", "gatewaydetection", "rgmappingkernel", "pathplanning",
+                                                  "lowleveldrive"};
     for (std::size_t m = 0; m < modules.size(); ++m)
       seeds.write("module_config", modules[m],
                   std::string(1, char(m)) + rgnav::readConfigFile((root / "config/modules" / (modules[m] + ".yaml")).string()));

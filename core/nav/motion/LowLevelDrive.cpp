@@ -76,7 +76,7 @@ void LowLevelDrive::setChain(const DriveChain& chain) {
     throw InvalidArgumentError("low-level drive: chain id " + std::to_string(chain.id) +
                                " is not above the last one (" + std::to_string(lastChainId_) + ")");
   }
-  TimedTrajectory timed(chain.chain, referenceLimits(config_), chain.startSpeed, 0.0);
+  TimedTrajectory timed = timedWithMargin(chain);
   lastChainId_ = chain.id;
   chain_ = chain;
   timed_ = std::move(timed);
@@ -85,6 +85,15 @@ void LowLevelDrive::setChain(const DriveChain& chain) {
   status_.chainFinished = false;
   status_.progress = 0.0;
   status_.remainingSeconds = timed_->duration();
+}
+
+TimedTrajectory LowLevelDrive::timedWithMargin(const DriveChain& chain) const {
+  try {
+    return TimedTrajectory(chain.chain, referenceLimits(config_), chain.startSpeed, 0.0);
+  } catch (const InvalidArgumentError&) {
+    // A chain planned to the full limits (a stop just long enough) is driven without the margin.
+    return TimedTrajectory(chain.chain, config_.limits, chain.startSpeed, 0.0);
+  }
 }
 
 void LowLevelDrive::stop() { dropChain(DriveState::Braking); }

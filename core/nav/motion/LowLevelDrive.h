@@ -9,9 +9,10 @@
 // on the odometry clock; feed-forward speeds are the reference's mean over the next tick, as the
 // base holds a command for one tick) -> Settling (the reference stands at the chain's end; the
 // robot creeps onto the end pose until within 1 cm and 0.5 deg at rest, or for at most 3 s) ->
-// Idle with chainFinished (after 3 s short of the end: Idle without). Odometry loss or stop(): Braking (the chain is dropped; speeds fall
-// along the current curvature at the deceleration limits) -> Idle. Every command keeps within
-// the MotionLimits, including their accelerations from the previous command.
+// Idle with chainFinished (after 3 s short of the end: Idle without). Odometry loss or stop():
+// Braking (the chain is dropped; speeds fall along the current curvature at the deceleration
+// limits) -> Idle. Every command keeps within the MotionLimits, including their accelerations
+// from the previous command.
 #pragma once
 
 #include <cstdint>
@@ -43,7 +44,9 @@ struct LowLevelDriveConfig {
 };
 
 // The limits the drive's reference moves within (see referenceMargin): the predicted time of a
-// chain is TimedTrajectory(chain, referenceLimits(config), startSpeed).duration().
+// chain is TimedTrajectory(chain, referenceLimits(config), startSpeed).duration(). A chain these
+// cannot time (e.g. a stop planned just long enough at the full deceleration) is driven at the
+// full limits instead.
 MotionLimits referenceLimits(const LowLevelDriveConfig& config);
 
 enum class DriveState { Idle, Tracking, Settling, Braking };
@@ -77,6 +80,7 @@ class LowLevelDrive {
   DriveStatus status() const;
 
  private:
+  TimedTrajectory timedWithMargin(const DriveChain& chain) const;
   VelocityCommand track(const OdometryReading& reading);
   VelocityCommand settle(const OdometryReading& reading, double wallSeconds);
   VelocityCommand brake() const;

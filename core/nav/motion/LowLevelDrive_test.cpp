@@ -189,10 +189,17 @@ class LowLevelDriveTest : public CppUnit::TestFixture {
     rig.runUntilFinished(30.0);
     CPPUNIT_ASSERT(rig.drive.status().chainFinished);
     assertStandsAtEnd(turn, rig.robot);
-    // A chain it cannot brake on is refused and the drive goes on.
+    // A stop planned just long enough at the full deceleration (1 m from 1 m/s) is taken without
+    // the reference margin; a chain it cannot brake on at all is refused and the drive goes on.
+    TrajectoryChain stop;
+    stop.append({rig.robot.pose(), 1.0, 0.0, 0.0});
+    CPPUNIT_ASSERT_THROW(rgnav::TimedTrajectory(stop, rgnav::referenceLimits(driveConfig()), 1.0),
+                         rgnav::InvalidArgumentError);
+    rig.drive.setChain({7, stop, 1.0, rig.now});
+    CPPUNIT_ASSERT_EQUAL(std::uint64_t{7}, rig.drive.status().chainId);
     TrajectoryChain stub;
     stub.append({rig.robot.pose(), 0.1, 0.0, 0.0});
-    CPPUNIT_ASSERT_THROW(rig.drive.setChain({7, stub, 1.0, rig.now}), rgnav::InvalidArgumentError);
+    CPPUNIT_ASSERT_THROW(rig.drive.setChain({8, stub, 1.0, rig.now}), rgnav::InvalidArgumentError);
   }
 
   void standsWithoutChain() {

@@ -1,11 +1,13 @@
 // TimedTrajectory: the velocity profile of a chain. Each segment is cut into pieces of at most
-// 1 cm (every joint is a grid point, so no segment is skipped); the acceleration is constant on a
-// piece. A forward pass raises the speed as fast as the acceleration and the rotational
-// acceleration allow, a backward pass lowers it so that the robot can always brake to the next
-// caps and to the end speed; the caps at a grid point are the top speed, the top rotational speed,
-// the lateral acceleration and the rotational acceleration at constant speed (sharpness v^2) over
-// both pieces that touch it. The rotational acceleration sharpness v^2 + kappa a is checked at
-// both ends of a piece (it is linear in kappa and in v^2 there).
+// 1 cm, at least four (every joint is a grid point, so no segment is skipped); the acceleration
+// is constant on a piece. A forward pass raises the speed as fast as the acceleration and the
+// rotational acceleration allow, a backward pass lowers it so that the robot can always brake to
+// the next caps and to the end speed. The caps at a grid point are the top speed, the top
+// rotational speed, the lateral acceleration and the rotational acceleration at constant speed
+// (sharpness v^2) over both pieces that touch it, and at a curvature jump the speed whose
+// rotational step the rotational acceleration makes up in one 50 ms control period. The
+// rotational acceleration sharpness v^2 + kappa a is checked at both ends of a piece (it is
+// linear in kappa and in v^2 there).
 #include "core/nav/motion/TimedTrajectory.h"
 
 #include <algorithm>
@@ -19,6 +21,8 @@ namespace rgnav {
 namespace {
 
 constexpr double kGridStep = 0.01;  // m
+constexpr int kMinPieces = 4;       // per segment: a chain shorter than a step still gets a ramp
+constexpr double kJumpSeconds = 0.05;  // s: one period of the Low-Level Drive
 constexpr double kInf = std::numeric_limits<double>::infinity();
 
 // A piece of the grid: its length and the curvature at its ends, its sharpness.
@@ -84,7 +88,7 @@ TimedTrajectory::TimedTrajectory(TrajectoryChain chain, const MotionLimits& limi
   std::vector<Piece> pieces;
   s_.push_back(0.0);
   for (const TrajectorySegment& segment : chain_.segments()) {
-    const int n = std::max(1, static_cast<int>(std::ceil(segment.length / kGridStep)));
+    const int n = std::max(kMinPieces, static_cast<int>(std::ceil(segment.length / kGridStep)));
     const double ds = segment.length / n;
     const double s0 = s_.back();
     for (int k = 0; k < n; ++k) {
@@ -98,6 +102,13 @@ TimedTrajectory::TimedTrajectory(TrajectoryChain chain, const MotionLimits& limi
     const double c = pieceCap(pieces[j], limits);
     cap[j] = std::min(cap[j], c);
     cap[j + 1] = std::min(cap[j + 1], c);
+    // A curvature jump at a joint steps the rotational speed by v * jump: slow enough that the
+    // rotational acceleration makes the step up within one control period.
+    const double jump = j > 0 ? std::abs(pieces[j].kappaA - pieces[j - 1].kappaB) : 0.0;
+    if (jump > 1e-9) {
+      const double v = limits.maxRotationalAcceleration * kJumpSeconds / jump;
+      cap[j] = std::min(cap[j], v * v);
+    }
   }
   const double w0 = startSpeed * startSpeed, wEnd = endSpeed * endSpeed;
   if (w0 > cap.front() * (1.0 + 1e-9)) {

@@ -1,7 +1,9 @@
 // Tests the velocity profile: the trapezoid of a straight against its closed form; on a chain of
 // straights, clothoids and arcs every limit holds at every moment (sampled at 1 ms); the
 // predicted time matches a drive that integrates the profile's speeds; time and arc length
-// invert each other; start speeds the chain cannot take or brake from are rejected.
+// invert each other; a turn on the spot shorter than a grid step is timed; curvature jumps are
+// passed slowly enough for the rotational acceleration; start speeds the chain
+// cannot take or brake from are rejected.
 #include <cppunit/extensions/HelperMacros.h>
 
 #include <cmath>
@@ -37,6 +39,8 @@ class TimedTrajectoryTest : public CppUnit::TestFixture {
   CPPUNIT_TEST(everyLimitHolds);
   CPPUNIT_TEST(predictionMatchesIntegratedDrive);
   CPPUNIT_TEST(timeAndArcLengthInvert);
+  CPPUNIT_TEST(turnOnTheSpotIsTimed);
+  CPPUNIT_TEST(curvatureJumpsAreSlowed);
   CPPUNIT_TEST(startSpeedsAreChecked);
   CPPUNIT_TEST_SUITE_END();
 
@@ -106,6 +110,34 @@ class TimedTrajectoryTest : public CppUnit::TestFixture {
       CPPUNIT_ASSERT_DOUBLES_EQUAL(t, timed.timeAt(state.s), 1e-6);
       CPPUNIT_ASSERT_DOUBLES_EQUAL(state.velocity, timed.speedAt(state.s), 1e-6);
     }
+  }
+
+  void turnOnTheSpotIsTimed() {
+    // A quarter turn on an arc of 1 mm radius (1.6 mm long, shorter than a grid step): the
+    // rotational acceleration and speed limits (pi/2) time it as a bang-bang turn of 2 s.
+    TrajectoryChain spot;
+    spot.append({{}, 0.001 * M_PI / 2.0, 1000.0, 0.0});
+    const TimedTrajectory timed(spot, MotionLimits{});
+    CPPUNIT_ASSERT_DOUBLES_EQUAL(2.0, timed.duration(), 0.02);
+    CPPUNIT_ASSERT(std::abs(timed.stateAt(1.0).rotational) <= MotionLimits{}.maxRotationalVelocity + 1e-9);
+  }
+
+  void curvatureJumpsAreSlowed() {
+    const MotionLimits m;
+    // A straight into an arc of radius 1 m: the rotational speed steps by v at the joint.
+    TrajectoryChain chain;
+    chain.append({{}, 3.0, 0.0, 0.0});
+    chain.append({chain.end(), 3.0, 1.0, 0.0});
+    const TimedTrajectory timed(chain, m);
+    CPPUNIT_ASSERT_DOUBLES_EQUAL(m.maxRotationalAcceleration * 0.05, timed.speedAt(3.0), 1e-9);
+    CPPUNIT_ASSERT(timed.speedAt(1.5) > 0.5);
+    // A spot turn before a straight stops rotating (nearly) before it drives off.
+    TrajectoryChain spot;
+    spot.append({{}, 0.001 * M_PI / 2.0, 1000.0, 0.0});
+    spot.append({spot.end(), 1.0, 0.0, 0.0});
+    const TimedTrajectory spotTimed(spot, m);
+    const double joint = spotTimed.timeAt(0.001 * M_PI / 2.0);
+    CPPUNIT_ASSERT(std::abs(spotTimed.stateAt(joint - 1e-6).rotational) <= m.maxRotationalAcceleration * 0.05 + 1e-3);
   }
 
   void startSpeedsAreChecked() {

@@ -31,6 +31,13 @@ TrajectoryChain polyline(const std::vector<Pose2D>& targets, const TurnShape& sh
   return *chain;
 }
 
+// A quarter turn on the spot (an arc of 1 mm radius), then 2 m straight on: the curvature jumps.
+TrajectoryChain spotTurnThenStraight() {
+  TrajectoryChain chain({{{}, 0.001 * M_PI / 2.0, 1000.0, 0.0}});
+  chain.append({chain.end(), 2.0, 0.0, 0.0});
+  return chain;
+}
+
 // Targets `spacing` apart along x, alternately `offset` left and right of the axis.
 std::vector<Pose2D> zigzag(int count, double spacing, double offset) {
   std::vector<Pose2D> targets;
@@ -56,6 +63,7 @@ std::vector<TrackingCase> trackingSuite() {
       {"slalom-1.5m-tight", polyline(zigzag(6, 1.5, 0.5), sharp), 0.5},
       {"loop-4m", polyline({{4.0, 0.0, 0.0}, {4.0, 4.0, 0.0}, {0.0, 4.0, 0.0}, {0.0, 0.5, 0.0}}, gentle), 0.8},
       {"g1-clothoid-join", TrajectoryChain({*join}), 0.4},
+      {"spot-turn-90deg-then-straight", spotTurnThenStraight(), 0.5},
   };
 }
 

@@ -2,7 +2,8 @@
 // the Low-Level Drive follows the fixed suite of chains (TrackingSuite) driving the simulator's
 // robot without odometry noise, in a 20 Hz loop on the wall clock with simulated time equal to
 // wall time (--fast: simulated time only, no sleeping; the loop periods are then the nominal
-// 50 ms and the summary says clock=simulated). A line per chain, then
+// 50 ms and the summary says clock=simulated; a real-time loop asks for SCHED_FIFO and says
+// clock=wall-fifo, or clock=wall-normal without the privilege). A line per chain, then
 //   tracking: chains=… rms_lateral_m=… final_pos_err_m=… final_yaw_err_deg=… time_prediction_err=…
 //             loop_period_p99_ms=…
 // with the worst chain's RMS lateral error, the worst final errors, the largest relative
@@ -69,7 +70,7 @@ int main(int argc, char** argv) {
     std::printf("tracking: chains=%zu rms_lateral_m=%.4f final_pos_err_m=%.4f final_yaw_err_deg=%.3f time_prediction_err=%.4f"
                 " loop_period_p99_ms=%.1f unfinished=%zu clock=%s\n",
                 suite.size(), rms, position, yaw, timeError, 1e3 * rgnav::testing::percentile(clock.periods(), 0.99),
-                unfinished, fast ? "simulated(nominal-period)" : "wall");
+                unfinished, clock.scheduling().c_str());
     return unfinished == 0 ? 0 : 1;
   } catch (const po::error& e) {
     std::cerr << "rgnav-eval-tracking: " << e.what() << "\n" << desc << std::endl;

@@ -1,7 +1,9 @@
 // Fuzz target: the module parameter files (config/modules/) parsed strictly. The first byte picks
-// the module (ScanMapper, GatewayDetection, RG Mapping Kernel, PathPlanning), the rest is the YAML text.
+// the module (ScanMapper, GatewayDetection, RG Mapping Kernel, PathPlanning,
+// LowLevelDrive), the rest is the YAML text.
 #include "core/common/Errors.h"
 #include "core/gateways/detection/GatewayDetectorConfigYaml.h"
+#include "core/nav/motion/LowLevelDriveConfigYaml.h"
 #include "core/nav/planning/RoutePlannerConfigYaml.h"
 #include "core/rgmap/kernel/RgMappingKernelConfigYaml.h"
 #include "core/slam/SlamConfigYaml.h"
@@ -14,7 +16,7 @@ void fuzzModuleConfig(const std::uint8_t* data, std::size_t size) {
   if (size == 0) return;
   const std::string text = fuzzText(data + 1, size - 1);
   try {
-    switch (data[0] % 4) {
+    switch (data[0] % 5) {
       case 0:
         parseSlamConfig(text, "scanmapper.yaml");
         break;
@@ -24,8 +26,11 @@ void fuzzModuleConfig(const std::uint8_t* data, std::size_t size) {
       case 2:
         parseRgMappingKernelConfig(text, "rgmappingkernel.yaml");
         break;
-      default:
+      case 3:
         parseRoutePlannerConfig(text, "pathplanning.yaml");
+        break;
+      default:
+        parseLowLevelDriveConfig(text, "lowleveldrive.yaml");
     }
   } catch (const Error&) {
   }
