@@ -28,4 +28,11 @@ std::vector<DoorLine> GroundTruthClient::doorLines() {
   });
 }
 
+std::vector<Person> GroundTruthClient::people() {
+  return connection_.call("people", [](RGNav::GroundTruth_ptr g) {
+    RGNav::PersonSeq_var people = g->people();
+    return fromIdlSeq<std::vector<Person>>(people.in(), [](const RGNav::Person& p) { return fromIdl(p); });
+  });
+}
+
 }  // namespace rgnav

@@ -8,6 +8,7 @@
 #include "core/common/Pose2D.h"
 #include "core/common/SensorData.h"
 #include "core/sim/GroundTruth.h"
+#include "core/sim/people/Person.h"
 
 namespace rgnav {
 
@@ -22,6 +23,8 @@ class GroundTruthClient : public ModuleClientOf<RGNav::GroundTruth> {
   int roomAt(double x, double y);
   unsigned roomCount();
   std::vector<DoorLine> doorLines();
+  // The people walking through the world now (empty if there are none).
+  std::vector<Person> people();
 };
 
 }  // namespace rgnav

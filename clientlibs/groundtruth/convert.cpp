@@ -12,4 +12,12 @@ DoorLine fromIdl(const RGNav::DoorLine& door) {
   return DoorLine{WorldPoint{door.a.x, door.a.y}, WorldPoint{door.b.x, door.b.y}, door.roomA, door.roomB};
 }
 
+RGNav::Person toIdl(const Person& person) {
+  return RGNav::Person{person.position.x, person.position.y, person.velocity.x, person.velocity.y, person.radius};
+}
+
+Person fromIdl(const RGNav::Person& person) {
+  return Person{WorldPoint{person.x, person.y}, WorldPoint{person.vx, person.vy}, person.radius};
+}
+
 }  // namespace rgnav

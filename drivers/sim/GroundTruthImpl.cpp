@@ -36,4 +36,10 @@ RGNav::DoorLineSeq* GroundTruthImpl::doorLines() {
   });
 }
 
+RGNav::PersonSeq* GroundTruthImpl::people() {
+  return serve(Raises::FailedOnly, [&] {
+    return new RGNav::PersonSeq(toIdlSeq<RGNav::PersonSeq>(robot_->people(), [](const Person& p) { return toIdl(p); }));
+  });
+}
+
 }  // namespace rgnav

@@ -17,6 +17,7 @@ class GroundTruthImpl : public ServiceServant<POA_RGNav::GroundTruth> {
   CORBA::Long roomAt(CORBA::Double x, CORBA::Double y) override;
   CORBA::ULong roomCount() override;
   RGNav::DoorLineSeq* doorLines() override;
+  RGNav::PersonSeq* people() override;
 
  private:
   std::shared_ptr<SimulatedRobot> robot_;

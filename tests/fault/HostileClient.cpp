@@ -119,6 +119,7 @@ void HostileClient::addGroundTruthCalls() {
   add(c, groundTruth_, "GroundTruth.roomAt(far)", [](T t) { return t->roomAt(1e308, -1e308); });
   add(c, groundTruth_, "GroundTruth.roomCount", [](T t) { return t->roomCount(); });
   add(c, groundTruth_, "GroundTruth.doorLines", [](T t) { return t->doorLines(); });
+  add(c, groundTruth_, "GroundTruth.people", [](T t) { return t->people(); });
 }
 
 void HostileClient::addScanMapperCalls() {

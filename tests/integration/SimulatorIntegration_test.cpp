@@ -1,7 +1,8 @@
 // The simulator through the real server set: in lock-step on a tour, a consumer gets exactly the
 // scans an in-process simulation with the same seed makes (the servers add nothing and lose
 // nothing), with ground truth per scan; in real time with velocity commands, the robot moves
-// while commanded and stops when the commands lapse.
+// while commanded and stops when the commands lapse; a BARN task world starts the Jackal at the
+// task's start, and the ground truth and health report the walking people and both counters.
 #include <cppunit/extensions/HelperMacros.h>
 
 #include <chrono>
@@ -13,6 +14,7 @@
 
 #include "clientlibs/base/BaseClient.h"
 #include "clientlibs/groundtruth/GroundTruthClient.h"
+#include "core/config/ShippedConfig.h"
 #include "core/sim/LoadedWorld.h"
 #include "core/sim/TourRun.h"
 #include "tests/integration/IntegrationHelpers.h"
@@ -25,6 +27,8 @@ std::string freiburg52() {
   return TestCluster::shared("data/floorplans/ipa_room_segmentation/test_maps/Freiburg52_scan_furnitures.png");
 }
 
+std::string barn000() { return TestCluster::shared("data/planning/barn/barn_000.yaml"); }
+
 std::vector<std::string> simulatorCommand(const std::vector<std::string>& extra) {
   std::vector<std::string> command{TestCluster::program("rgnav-sim"), "--world", freiburg52(), "--seed", "5"};
   command.insert(command.end(), extra.begin(), extra.end());
@@ -36,6 +40,7 @@ class SimulatorIntegrationTest : public CppUnit::TestFixture {
   CPPUNIT_TEST_SUITE(SimulatorIntegrationTest);
   CPPUNIT_TEST(testLockStepTourServesExactlyTheInProcessScans);
   CPPUNIT_TEST(testVelocityCommandsDriveAndLapse);
+  CPPUNIT_TEST(testTaskWorldWithPeople);
   CPPUNIT_TEST_SUITE_END();
 
  public:
@@ -108,6 +113,29 @@ class SimulatorIntegrationTest : public CppUnit::TestFixture {
     std::this_thread::sleep_for(std::chrono::milliseconds(500));
     CPPUNIT_ASSERT_DOUBLES_EQUAL(settled->theta, latestPose().theta, 1e-9);
     CPPUNIT_ASSERT_THROW(base.setVelocity(NAN, 0.0), InvalidArgumentError);
+  }
+
+  void testTaskWorldWithPeople() {
+    TestCluster cluster({{"Simulator",
+                          {TestCluster::program("rgnav-sim"), "--world", barn000(), "--config", shippedConfigFile("sim/jackal.yaml"),
+                           "--clock", "lockstep", "--people", "2"},
+                          {"Laser", "Base", "GroundTruth"}}});
+    cluster.start();
+    LaserClient laser(cluster.clientSettings());
+    const auto batch = laser.scansSince(0, 10);
+    CPPUNIT_ASSERT_EQUAL(std::size_t(1), batch.records.size());
+    CPPUNIT_ASSERT_EQUAL(std::size_t(720), batch.records.front().ranges.size());
+    GroundTruthClient truth(cluster.clientSettings());
+    const LoadedWorld world = loadWorld(barn000());
+    const Pose2D start = truth.truePose(batch.records.front().id);
+    CPPUNIT_ASSERT_DOUBLES_EQUAL(world.task->start.x, start.x, 1e-9);  // the robot has not moved
+    CPPUNIT_ASSERT_DOUBLES_EQUAL(world.task->start.y, start.y, 1e-9);
+    const std::vector<Person> people = truth.people();
+    CPPUNIT_ASSERT_EQUAL(std::size_t(2), people.size());
+    for (const Person& p : people) CPPUNIT_ASSERT_DOUBLES_EQUAL(0.25, p.radius, 1e-12);
+    const ModuleStatusInfo status = laser.status();
+    CPPUNIT_ASSERT_EQUAL(std::uint64_t(0), status.counters.at("robot_collisions"));
+    CPPUNIT_ASSERT_EQUAL(std::uint64_t(0), status.counters.at("person_bumps"));
   }
 };
 CPPUNIT_TEST_SUITE_REGISTRATION(SimulatorIntegrationTest);

@@ -21,6 +21,7 @@
 #include "core/nav/grid/Footprint.h"
 #include "core/nav/grid/GridPlanner.h"
 #include "core/raster/OccupancyGrid.h"
+#include "core/sim/people/Person.h"
 #include "core/sim/world/DiskObstacle.h"
 
 namespace rgnav {
@@ -35,13 +36,6 @@ struct PeopleConfig {
 
 // Throws ConfigError for a negative count, a non-positive radius or speed, or minSpeed > maxSpeed.
 void validate(const PeopleConfig& config);
-
-// What the ground truth knows of a person.
-struct Person {
-  WorldPoint position;
-  WorldPoint velocity;  // m/s, over the last step
-  double radius = 0.25;
-};
 
 class Crowd {
  public:
