@@ -108,6 +108,7 @@ CrowdOutcome driveGoals(const ClientSettings& settings, const std::vector<Eigen:
   TruePoseProbe probe(settings);
   CrowdOutcome outcome;
   for (std::size_t i = 0; i < goals.size(); ++i) {
+    if (options.verbose) std::fprintf(stderr, "goal %zu: to (%.2f, %.2f)\n", i + 1, goals[i].x(), goals[i].y());
     outcome.goals.push_back(driveOne(cam, probe, goals[i], options));
     const GoalOutcome& g = outcome.goals.back();
     if (options.verbose)
