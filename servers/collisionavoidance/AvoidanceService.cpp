@@ -3,6 +3,7 @@
 
 #include <chrono>
 #include <cmath>
+#include <cstdio>
 #include <iostream>
 #include <thread>
 
@@ -15,9 +16,14 @@ namespace {
 constexpr std::uint32_t kScanBatch = 50;
 constexpr double kStandingSpeed = 0.02;    // m/s: the robot stands
 constexpr double kDoorNearM = 1.5;         // blocked this near a gateway crossing of the plan: that door
-constexpr double kFrameCheckS = 2.0;       // how often the targets follow the odometry's drift
-constexpr double kFrameDriftM = 0.05;      // ... once it exceeds this
-constexpr double kFrameDriftRad = 0.02;
+// The targets follow the odometry's drift against the map frame (new targets make the core plan
+// anew), checked this often, once the drift exceeds these, and only while the goal is farther
+// than kFrameSettledM along the targets: near the goal a changed goal would come too late to
+// brake for it.
+constexpr double kFrameCheckS = 2.0;
+constexpr double kFrameDriftM = 0.1;
+constexpr double kFrameDriftRad = 0.03;
+constexpr double kFrameSettledM = 3.0;
 
 DriveRecord loadCheckpoint(const std::string& file) {
   const std::optional<std::string> saved = file.empty() ? std::nullopt : readCheckpoint(file);
@@ -120,6 +126,10 @@ void AvoidanceService::record(std::uint64_t generation, DrivePhase phase, const 
   const bool ends = phase == DrivePhase::Reached || phase == DrivePhase::Failed;
   drive_.progress.phase = phase;
   drive_.progress.reason = reason;
+  if (phase == DrivePhase::Reached) {
+    drive_.progress.targetIndex = drive_.progress.targetCount;
+    drive_.progress.distanceLeftM = 0.0;
+  }
   if (ends) checkpoint();
 }
 
@@ -245,7 +255,14 @@ void AvoidanceService::setCoreTargets(const std::vector<TargetPose>& targets) {
   targetsFrame_ = mapFromOdometry_;
 }
 
-void AvoidanceService::followFrameDrift() {
+void AvoidanceService::followFrameDrift(const Pose2D& robot) {
+  double left = 0.0;
+  Pose2D from = robot;
+  for (const Pose2D& t : core_->targets()) {
+    left += distance(from, t);
+    from = t;
+  }
+  if (left < kFrameSettledM) return;
   const Pose2D drift = between(targetsFrame_, mapFromOdometry_);
   if (std::hypot(drift.x, drift.y) < kFrameDriftM && std::abs(drift.theta) < kFrameDriftRad) return;
   std::vector<Pose2D> moved;
@@ -256,11 +273,12 @@ void AvoidanceService::followFrameDrift() {
 
 void AvoidanceService::decide(const DriveRecord& drive, std::uint64_t generation, const RobotState& state) {
   if (state.stamp - targetsFrameStamp_ >= kFrameCheckS) {
-    followFrameDrift();
+    followFrameDrift(state.pose);
     targetsFrameStamp_ = state.stamp;
   }
   const ObstacleGrid grid = obstacles_.grid();
   const AvoidanceDecision decision = core_->update(state, std::span<const ObstacleGrid>(&grid, 1));
+  if (options_.trace && decision.action != AvoidanceAction::Keep) traceDecision(state, decision);
   if (decision.chain) send(*decision.chain);
   if (decision.stopNow) lld_.stop();
   switch (decision.action) {
@@ -297,6 +315,19 @@ void AvoidanceService::decide(const DriveRecord& drive, std::uint64_t generation
   if (index == drive_.progress.targetIndex) return;
   drive_.progress.targetIndex = index;
   checkpoint();  // a restart drives on from here
+}
+
+void AvoidanceService::traceDecision(const RobotState& state, const AvoidanceDecision& decision) const {
+  char line[256];
+  const Pose2D goal = core_->targets().empty() ? Pose2D{} : core_->targets().back();
+  std::snprintf(line, sizeof line, "t=%.2f odometry=(%.2f %.2f %.2f) v=%.2f targets=%zu goal=(%.2f %.2f) %s: %s",
+                state.stamp, state.pose.x, state.pose.y, state.pose.theta, state.velocity, core_->targets().size(),
+                goal.x, goal.y, toString(decision.action).c_str(), decision.reason.c_str());
+  std::cerr << line;
+  if (decision.chain)
+    std::cerr << " chain " << decision.chain->chain.length() << " m to (" << decision.chain->chain.end().x << " "
+              << decision.chain->chain.end().y << ") from " << decision.chain->startSpeed << " m/s";
+  std::cerr << std::endl;
 }
 
 void AvoidanceService::send(DriveChain chain) {

@@ -50,6 +50,7 @@ struct AvoidanceServiceOptions {
   std::string plannerObject = "PathPlanning";
   std::string checkpointFile;  // empty: no checkpoints
   Footprint footprint = Footprint::disk(0.25);
+  bool trace = false;  // log every decision but "keep" (stderr: the module's log)
 };
 
 class AvoidanceService {
@@ -77,8 +78,9 @@ class AvoidanceService {
   void plan(const DriveRecord& drive, std::uint64_t generation, const Pose2D& here);
   void decide(const DriveRecord& drive, std::uint64_t generation, const RobotState& state);
   void send(DriveChain chain);
+  void traceDecision(const RobotState& state, const AvoidanceDecision& decision) const;
   void setCoreTargets(const std::vector<TargetPose>& targets);
-  void followFrameDrift();
+  void followFrameDrift(const Pose2D& robot);  // robot: odometry frame
   void record(std::uint64_t generation, DrivePhase phase, const std::string& reason = {});
   void checkpoint();                               // under lock
 

@@ -38,7 +38,8 @@ int main(int argc, char** argv) {
       ("truth-object", po::value(&serviceOptions.truthObject)->default_value("GroundTruth"), "GroundTruth (pose source groundtruth)")
       ("drive-object", po::value(&serviceOptions.driveObject)->default_value("LowLevelDrive"), "Low-Level Drive to send chains to")
       ("planner-object", po::value(&serviceOptions.plannerObject)->default_value("PathPlanning"), "PathPlanning module to ask for plans")
-      ("object", po::value(&objectName)->default_value("CollisionAvoidance"), "object name of the interface");
+      ("object", po::value(&objectName)->default_value("CollisionAvoidance"), "object name of the interface")
+      ("trace", po::bool_switch(&serviceOptions.trace), "log every decision but keep");
   std::unique_ptr<AvoidanceService> service;
   const int code = runServer(argc, argv, options, [&](ServerRuntime& runtime) {
     const CollisionAvoidanceConfig config = loadCollisionAvoidanceConfig(configFile);

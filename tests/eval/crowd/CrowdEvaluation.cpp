@@ -75,8 +75,7 @@ PreparedCrowd prepareCrowd(const CrowdEvaluationOptions& o) {
 }
 
 CrowdSetOptions crowdSetOptions(const CrowdEvaluationOptions& o, const PreparedCrowd& p) {
-  return {std::filesystem::absolute(o.world).string(), std::filesystem::absolute(o.simConfig).string(), p.start,
-          o.people, o.goals.seed};
+  return {o.world, o.simConfig, p.start, o.people, o.goals.seed};
 }
 
 SimulatorCounters simulatorCounters(const ClientSettings& settings) {

@@ -2,6 +2,7 @@
 #include "tests/eval/crowd/CrowdSet.h"
 
 #include <cstdio>
+#include <filesystem>
 
 #include "tests/eval/crowd/OfficeRgMap.h"
 
@@ -19,13 +20,14 @@ std::string poseArgument(const Pose2D& p) {
 }
 
 std::vector<std::string> simulatorCommand(const CrowdSetOptions& o) {
-  return {TestCluster::program("rgnav-sim"), "--world", o.world, "--config", o.simConfig, "--clock", "realtime",
+  return {TestCluster::program("rgnav-sim"), "--world", std::filesystem::absolute(o.world).string(), "--config",
+          std::filesystem::absolute(o.simConfig).string(), "--clock", "realtime",
           "--start", poseArgument(o.start), "--people", std::to_string(o.people), "--seed", std::to_string(o.seed)};
 }
 
 }  // namespace
 
-CrowdSet::CrowdSet(const CrowdSetOptions& o, const RgMapState& map)
+CrowdSet::CrowdSet(const CrowdSetOptions& o, const RgMapState* map)
     : cluster_(std::make_unique<TestCluster>(std::vector<ClusterModule>{
           {"Simulator", simulatorCommand(o), {"Laser", "Base", "GroundTruth"}},
           {"LowLevelDrive",
@@ -41,10 +43,10 @@ CrowdSet::CrowdSet(const CrowdSetOptions& o, const RgMapState& map)
            {"RGMappingKernel"}},
           {"CollisionAvoidance",
            {TestCluster::program("rgnav-collisionavoidance"), "--config",
-            TestCluster::moduleConfig("collisionavoidance"), "--pose-source", "groundtruth"},
+            TestCluster::moduleConfig("collisionavoidance"), "--pose-source", "groundtruth", "--trace"},
            {"CollisionAvoidance"},
            {"Simulator", "LowLevelDrive", "PathPlanning"}}})) {
-  writeKernelCheckpoint(map, cluster_->dir() + "/run/state/RGMappingKernel");
+  if (map) writeKernelCheckpoint(*map, cluster_->dir() + "/run/state/RGMappingKernel");
 }
 
 void CrowdSet::start() { cluster_->start(); }

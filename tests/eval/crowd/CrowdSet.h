@@ -16,7 +16,7 @@
 namespace rgnav {
 
 struct CrowdSetOptions {
-  std::string world;      // the simulator's --world
+  std::string world;      // the simulator's --world (relative: to the working directory)
   std::string simConfig;  // its --config
   Pose2D start;
   int people = 8;
@@ -25,8 +25,9 @@ struct CrowdSetOptions {
 
 class CrowdSet {
  public:
-  // Writes the kernel's checkpoint into the set's directory; start() brings the set up.
-  CrowdSet(const CrowdSetOptions& options, const RgMapState& map);
+  // Writes the kernel's checkpoint of `map` into the set's directory (nullptr: the kernel starts
+  // without a map, so the PathPlanning module cannot plan); start() brings the set up.
+  CrowdSet(const CrowdSetOptions& options, const RgMapState* map);
 
   void start();
   testing::TestCluster& cluster() { return *cluster_; }

@@ -23,7 +23,7 @@ int main(int argc, char** argv) {
     if (!parseCommandLine(argc, argv, description)) return 0;
     testing::catchInterruptions();
     const PreparedCrowd prepared = prepareCrowd(options);
-    CrowdSet set(crowdSetOptions(options, prepared), prepared.map);
+    CrowdSet set(crowdSetOptions(options, prepared), &prepared.map);
     set.start();
     const CrowdOutcome outcome = driveGoals(set.cluster().clientSettings(), prepared.goals, options.run);
     std::cout << crowdLine(outcome, simulatorCounters(set.cluster().clientSettings())) << std::endl;
