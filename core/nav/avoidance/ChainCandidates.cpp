@@ -15,11 +15,13 @@ namespace {
 constexpr double kMinJoinM = 1e-3;
 // Slices shorter than this are left out (a pivot by a degree is some 2e-5 m long).
 constexpr double kMinSliceM = 1e-9;
+// Deviations shift up to this many of the first targets.
+constexpr std::size_t kDeviatedTargets = 3;
 // Pivots (turning on the spot) below this angle are left out.
 constexpr double kMinPivotRad = 0.05;
 
-TurnShape shapeOf(const CandidateConfig& config) {
-  return {config.turnMaxCurvaturePerM, config.turnSharpnessPerM2, config.turnMaxSharpnessPerM2};
+TurnShape shapeOf(const CandidateConfig& config, double sharpness) {
+  return {config.turnMaxCurvaturePerM, sharpness, config.turnMaxSharpnessPerM2};
 }
 
 // The targets up to the first that lies horizonM or farther along the polyline from `start`.
@@ -55,22 +57,30 @@ std::vector<Candidate> candidateChains(const ChainStart& start, std::span<const 
                                        const CandidateConfig& config) {
   std::vector<Candidate> out;
   if (targets.empty()) return out;
-  const TurnShape shape = shapeOf(config);
+  // Fast, gentle turns for the path; sharp ones (slower, tighter) for it and the manoeuvres.
+  const TurnShape gentle = shapeOf(config, config.turnSharpnessPerM2);
+  const TurnShape shape = shapeOf(config, config.manoeuvreSharpnessPerM2);
   const std::vector<Pose2D> ahead = withinHorizon(start.pose, targets, config.horizonM);
-  if (auto chain = smoothPolyline(start.pose, ahead, shape)) out.push_back({Candidate::Kind::Path, std::move(*chain)});
-  // Deviations: the first target shifted across the line from the start to it.
+  for (const TurnShape& s : {gentle, shape})
+    if (auto chain = smoothPolyline(start.pose, ahead, s)) out.push_back({Candidate::Kind::Path, std::move(*chain)});
+  // Deviations: the first one, two or three targets shifted sideways (across their headings,
+  // which point along the path) by the same offset: around an obstacle on the path, then back.
   const Pose2D& first = ahead.front();
-  const double across = std::atan2(first.y - start.pose.y, first.x - start.pose.x) + M_PI / 2.0;
-  for (std::size_t k = 1; k <= config.lateralCount; ++k)
-    for (const double side : {1.0, -1.0}) {
-      const double offset = side * static_cast<double>(k) * config.lateralStepM;
-      std::vector<Pose2D> shifted = ahead;
-      shifted.front().x += offset * std::cos(across);
-      shifted.front().y += offset * std::sin(across);
-      if (auto chain = smoothPolyline(start.pose, shifted, shape))
-        out.push_back({Candidate::Kind::Deviation, std::move(*chain)});
-    }
-  if (start.speed <= 0.0 && config.pivotCount > 0) {
+  // (Never the goal: it is where the robot must end up.)
+  const std::size_t shiftable = ahead.size() == targets.size() ? ahead.size() - 1 : ahead.size();
+  for (std::size_t run = 1; run <= std::min(kDeviatedTargets, shiftable); ++run)
+    for (std::size_t k = 1; k <= config.lateralCount; ++k)
+      for (const double side : {1.0, -1.0}) {
+        const double offset = side * static_cast<double>(k) * config.lateralStepM;
+        std::vector<Pose2D> shifted = ahead;
+        for (std::size_t i = 0; i < run; ++i) {
+          shifted[i].x -= offset * std::sin(shifted[i].theta);
+          shifted[i].y += offset * std::cos(shifted[i].theta);
+        }
+        if (auto chain = smoothPolyline(start.pose, shifted, shape))
+          out.push_back({Candidate::Kind::Deviation, std::move(*chain)});
+      }
+  if (start.standing && config.pivotCount > 0) {
     // Standing: turn on the spot towards the first target, or by steps either way, then the path.
     std::vector<double> angles{normalizeAngle(std::atan2(first.y - start.pose.y, first.x - start.pose.x) - start.pose.theta)};
     for (std::size_t k = 1; k <= config.pivotCount; ++k)

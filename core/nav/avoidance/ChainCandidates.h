@@ -1,8 +1,8 @@
 // ChainCandidates: the chains of trajectory segments the Collision Avoidance chooses among
 // (thesis 5.5.3: "generate consecutive trajectory segments given the target poses"): from the
 // start state, the smooth chain through the next targets (pose joins of core/nav/motion), the same
-// with the first target shifted sideways by a few steps either way (deviations that join back to
-// the path), and a fan of turns by different angles, each followed by a straight (ways out when
+// with the first one to three targets shifted sideways by a few steps either way (deviations
+// around an obstacle on the path that join back to it), and a fan of turns by different angles, each followed by a straight (ways out when
 // the targets are blocked). All are curvature-continuous: straights and clothoid-arc-clothoid
 // turns, 0 curvature at both ends (the start state's curvature is not continued). A robot that
 // stands may also first turn on the spot (towards the first target, or by steps either way):
@@ -30,6 +30,7 @@ struct ChainStart {
   Pose2D pose;
   double speed = 0.0;      // m/s
   double curvature = 0.0;  // 1/m
+  bool standing = false;   // the robot stands (it may turn on the spot)
 };
 
 struct Candidate {

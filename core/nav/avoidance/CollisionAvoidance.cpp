@@ -12,16 +12,22 @@ namespace rgnav {
 namespace {
 
 // The reference of the current chain is trusted as the next chain's start only while the robot
-// tracks it this closely; otherwise the next chain starts at the robot, from a standstill.
-constexpr double kMaxTrackingErrorM = 0.3;
+// tracks it this closely; otherwise the next chain starts where the robot will be, at its speed.
+constexpr double kMaxTrackingErrorM = 0.1;
+constexpr double kMaxTrackingErrorRad = 0.3;
 // A robot slower than this stands.
 constexpr double kStandingSpeed = 0.02;
+constexpr double kStandingTurnRate = 0.05;
+// A robot this slow within the goal tolerance has arrived (the drive settles the rest).
+constexpr double kArrivalSpeed = 0.1;
 // Curvatures below this are straight.
 constexpr double kStraight = 1e-6;
 // A new chain continues the current one's turn to its end if that lies within this.
 constexpr double kMaxLeadM = 3.0;
 // Chains cut short before an obstacle must still be this long to be worth driving.
 constexpr double kMinChainM = 0.15;
+// Straightening out from a turn uses this share of the rotational acceleration.
+constexpr double kUnwindShare = 0.9;
 // A chain cut short stops this far before where it would come too close: room to turn away.
 constexpr double kCutBackM = 0.3;
 // What cutting a chain short costs: a chain that reaches its end beats one that stops early.
@@ -60,7 +66,9 @@ CollisionAvoidance::PlanStart CollisionAvoidance::planStart(const RobotState& st
     const double t = state.stamp + config_.planningLatencyS - current_->startTime;
     if (t < currentTimed_->duration()) {
       const ReferenceState ref = currentTimed_->stateAt(std::max(t, 0.0));
-      if (distance(ref.pose, state.pose) < kMaxTrackingErrorM) {
+      const Pose2D now = currentTimed_->stateAt(std::max(state.stamp - current_->startTime, 0.0)).pose;
+      if (distance(now, state.pose) < kMaxTrackingErrorM &&
+          std::abs(normalizeAngle(now.theta - state.pose.theta)) < kMaxTrackingErrorRad) {
         const TrajectoryChain& chain = current_->chain;
         // The lead: the rest of the turn the reference is in, up to where the curvature is 0.
         double leadEnd = ref.s;
@@ -79,7 +87,15 @@ CollisionAvoidance::PlanStart CollisionAvoidance::planStart(const RobotState& st
       }
     }
   }
-  return {{state.pose, 0.0, 0.0}, {}, 0.0, 0.0};
+  const bool standing = std::abs(state.velocity) < kStandingSpeed && std::abs(state.rotational) < kStandingTurnRate;
+  if (standing) return {{state.pose, 0.0, 0.0, true}, {}, 0.0, 0.0};
+  // Moving off the reference (or without a chain): where the robot's arc takes it meanwhile.
+  const double speed = std::max(0.0, state.velocity);
+  const double dt = config_.planningLatencyS;
+  const double heading = state.pose.theta + state.rotational * dt / 2.0;
+  const Pose2D ahead{state.pose.x + speed * dt * std::cos(heading), state.pose.y + speed * dt * std::sin(heading),
+                     normalizeAngle(state.pose.theta + state.rotational * dt)};
+  return {{ahead, speed, speed > kStandingSpeed ? state.rotational / speed : 0.0, false}, {}, 0.0, 0.0};
 }
 
 SweptCheckOptions CollisionAvoidance::checkOptions() const {
@@ -118,13 +134,30 @@ double CollisionAvoidance::pathLeftFrom(const Pose2D& end) const {
 }
 
 std::vector<Candidate> CollisionAvoidance::candidatesFrom(const PlanStart& start) const {
-  std::vector<Candidate> all = candidateChains(start.state, targets_, config_.candidates);
-  if (start.lead.empty()) return all;
-  for (Candidate& candidate : candidateChains({start.lead.end(), 0.0, 0.0}, targets_, config_.candidates)) {
-    TrajectoryChain joined = start.lead;
-    for (const TrajectorySegment& segment : candidate.chain.segments()) joined.append(segment);
-    all.push_back({candidate.kind, std::move(joined)});
+  // Chains from a turning start first straighten out along a clothoid as sharp as the
+  // rotational acceleration allows at the start speed (no jump in the turn rate), or follow the
+  // current chain's turn to its end (the lead).
+  const auto after = [&](const TrajectoryChain& prefix, std::vector<Candidate>& out) {
+    const ChainStart from{prefix.end(), start.state.speed, 0.0, false};
+    for (Candidate& candidate : candidateChains(from, targets_, config_.candidates)) {
+      TrajectoryChain joined = prefix;
+      for (const TrajectorySegment& segment : candidate.chain.segments()) joined.append(segment);
+      out.push_back({candidate.kind, std::move(joined)});
+    }
+  };
+  const double kappa = start.state.curvature;
+  if (std::abs(kappa) <= kStraight) return candidateChains(start.state, targets_, config_.candidates);
+  std::vector<Candidate> all;
+  // (Within a turn on the spot only the lead: it ends the turn.)
+  if (std::abs(kappa) < kPivotCurvature) {
+    const double speed = std::max(start.state.speed, kStandingSpeed);
+    const double sharpness = std::min(config_.candidates.turnMaxSharpnessPerM2,
+                                      kUnwindShare * limits_.maxRotationalAcceleration / (speed * speed));
+    after(TrajectoryChain({TrajectorySegment{start.state.pose, std::abs(kappa) / sharpness, kappa,
+                                             kappa > 0.0 ? -sharpness : sharpness}}),
+          all);
   }
+  if (!start.lead.empty()) after(start.lead, all);
   return all;
 }
 
@@ -188,6 +221,7 @@ AvoidanceDecision CollisionAvoidance::send(const RobotState& state, TimedTraject
   current_ = drive;
   lastPlan_ = state.stamp;
   targetsChanged_ = false;
+  braking_ = false;
   return {action, std::move(drive), std::move(reason)};
 }
 
@@ -197,9 +231,14 @@ AvoidanceDecision CollisionAvoidance::wait(const RobotState& state, const PlanSt
     waitingSince_ = state.stamp;
     return {AvoidanceAction::Blocked, std::nullopt, "no free chain for " + std::to_string(config_.blockedWaitS) + " s"};
   }
-  if (!currentFree) {
-    if (auto braking = brakingChain(start)) return send(state, std::move(*braking), AvoidanceAction::Wait, "no free chain: braking");
+  if (!currentFree && !braking_) {
+    if (auto braking = brakingChain(start)) {
+      AvoidanceDecision decision = send(state, std::move(*braking), AvoidanceAction::Wait, "no free chain: braking");
+      braking_ = true;
+      return decision;
+    }
     if (start.state.speed >= kStandingSpeed) {
+      braking_ = true;
       current_.reset();
       currentTimed_.reset();
       return {AvoidanceAction::Wait, std::nullopt, "no free chain: stop now", true};
@@ -211,7 +250,7 @@ AvoidanceDecision CollisionAvoidance::wait(const RobotState& state, const PlanSt
 AvoidanceDecision CollisionAvoidance::update(const RobotState& state, std::span<const ObstacleGrid> grids) {
   if (targets_.empty()) return {AvoidanceAction::Keep, std::nullopt, "no targets"};
   const Pose2D goal = targets_.back();
-  if (distance(state.pose, goal) <= config_.goalToleranceM && std::abs(state.velocity) < kStandingSpeed) {
+  if (distance(state.pose, goal) <= config_.goalToleranceM && std::abs(state.velocity) < kArrivalSpeed) {
     targets_.clear();
     current_.reset();
     currentTimed_.reset();
@@ -226,6 +265,7 @@ AvoidanceDecision CollisionAvoidance::update(const RobotState& state, std::span<
   const bool refresh = !endsAtGoal && start.leftOnCurrent < config_.refreshDistanceM;
   const bool newTargets = targetsChanged_ && (!running || state.stamp - lastPlan_ >= config_.replanPeriodS);
   if (currentFree && running && !refresh && !newTargets) return {AvoidanceAction::Keep, std::nullopt, "chain free"};
+  if (currentFree && endsAtGoal && !newTargets) return {AvoidanceAction::Keep, std::nullopt, "arriving"};
 
   auto best = bestCandidate(start, clearance);
   if (!best) {

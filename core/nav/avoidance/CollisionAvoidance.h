@@ -104,6 +104,7 @@ class CollisionAvoidance {
   std::optional<TimedTrajectory> currentTimed_;
   Timestamp lastPlan_ = 0.0;
   std::optional<Timestamp> waitingSince_;
+  bool braking_ = false;  // the chain sent last brakes: no other until a free one
   std::uint64_t nextId_ = 1;
 };
 

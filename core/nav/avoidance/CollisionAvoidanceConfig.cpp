@@ -1,6 +1,7 @@
 // Validation of the Collision Avoidance's parameters (see CollisionAvoidanceConfig.h).
 #include "core/nav/avoidance/CollisionAvoidanceConfig.h"
 
+#include <algorithm>
 #include <cmath>
 #include <string>
 
@@ -25,8 +26,10 @@ void validate(const CandidateConfig& c) {
   positive(c.horizonM, "candidates.horizon_m");
   positive(c.turnMaxCurvaturePerM, "candidates.turn_max_curvature_per_m");
   positive(c.turnSharpnessPerM2, "candidates.turn_sharpness_per_m2");
-  if (!(c.turnMaxSharpnessPerM2 >= c.turnSharpnessPerM2) || !std::isfinite(c.turnMaxSharpnessPerM2))
-    throw ConfigError("collision avoidance: candidates.turn_max_sharpness_per_m2 must not be below the sharpness");
+  positive(c.manoeuvreSharpnessPerM2, "candidates.manoeuvre_sharpness_per_m2");
+  if (!(c.turnMaxSharpnessPerM2 >= std::max(c.turnSharpnessPerM2, c.manoeuvreSharpnessPerM2)) ||
+      !std::isfinite(c.turnMaxSharpnessPerM2))
+    throw ConfigError("collision avoidance: candidates.turn_max_sharpness_per_m2 must not be below the sharpnesses");
   positive(c.lateralStepM, "candidates.lateral_step_m");
   if (!(c.fanMaxDeflectionRad >= 0.0) || !(c.fanMaxDeflectionRad < M_PI))
     throw ConfigError("collision avoidance: candidates.fan_max_deflection_deg must lie in [0, 180)");

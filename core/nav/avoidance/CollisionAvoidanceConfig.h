@@ -15,9 +15,10 @@ namespace rgnav {
 struct CandidateConfig {
   double horizonM = 5.0;             // a chain covers targets up to this far along them
   double turnMaxCurvaturePerM = 3.0; // the turns of the joins (PoseJoins.h TurnShape)
-  double turnSharpnessPerM2 = 1.0;
+  double turnSharpnessPerM2 = 1.0;       // the path's turns (fast: v <= sqrt(rot. acc. / this))
+  double manoeuvreSharpnessPerM2 = 6.0;  // the path again, deviations, fans, after pivots
   double turnMaxSharpnessPerM2 = 40.0;
-  double lateralStepM = 0.2;         // deviations: the next target shifted sideways by k * step
+  double lateralStepM = 0.2;         // deviations: the first targets shifted sideways by k * step
   std::size_t lateralCount = 4;      // ... for k = 1..count on either side
   double fanMaxDeflectionRad = 1.2;  // fan: turn by up to +-this, then straight on
   std::size_t fanCount = 9;          // ... this many chains (odd: straight ahead is one)

@@ -29,6 +29,7 @@ void describe(V& v, CandidateConfig& c) {
   v.field("horizon_m", c.horizonM);
   v.field("turn_max_curvature_per_m", c.turnMaxCurvaturePerM);
   v.field("turn_sharpness_per_m2", c.turnSharpnessPerM2);
+  v.field("manoeuvre_sharpness_per_m2", c.manoeuvreSharpnessPerM2);
   v.field("turn_max_sharpness_per_m2", c.turnMaxSharpnessPerM2);
   v.field("lateral_step_m", c.lateralStepM);
   v.field("lateral_count", c.lateralCount);

@@ -87,15 +87,15 @@ SweptCheck checkSwept(const ObstacleClearance& clearance, const TrajectoryChain&
     for (int k = 1; k <= n; ++k) samples.push_back(segmentStart + segment.length * k / n);
     segmentStart += segment.length;
   }
-  // A robot that already stands closer than the margin may leave: near the start it must only
-  // not come closer.
+  // A robot that already stands closer than the margin (or, by the cells' coarseness, seems to
+  // touch) may leave: near the start it must only not come closer.
   const double atStart = clearance.footprintClearance(footprint, chain.start(), out.minClearance);
   const double startRequired = std::min(options.marginM, atStart);
   for (std::size_t i = 0; i < samples.size(); ++i) {
     const double s = samples[i];
     const double d = i == 0 ? atStart : clearance.footprintClearance(footprint, chain.poseAt(s), out.minClearance);
-    const double required = s <= options.reliefM ? std::max(startRequired, 0.0) : options.marginM;
-    if (d < required || (i == 0 && d <= 0.0)) {
+    const double required = s <= options.reliefM ? startRequired : options.marginM;
+    if (d < required) {
       out.clear = false;
       out.freeLength = i == 0 ? 0.0 : samples[i - 1];
       return out;

@@ -47,8 +47,7 @@ struct SweptCheckOptions {
   double stepM = 0.03;        // sampling along the chain
   double clearanceCapM = 0.5; // clearances are measured exactly up to margin + this
   double reliefM = 0.3;       // a chain starting closer than the margin must keep its start's
-                              // clearance over this length (then the margin); it may not start
-                              // overlapping
+                              // clearance over this length (then the margin)
 };
 
 SweptCheck checkSwept(const ObstacleClearance& clearance, const TrajectoryChain& chain, const Footprint& footprint,

@@ -5,6 +5,7 @@
 //   barn: worlds=... success=... collisions=... timeouts=... score_mean=...
 // success, collisions and timeouts as shares of the worlds; score_mean over all worlds (a failed
 // run scores 0), the benchmark's metric (SOURCES.md beside the worlds).
+#include <algorithm>
 #include <atomic>
 #include <cstdio>
 #include <iostream>
@@ -47,6 +48,7 @@ int main(int argc, char** argv) {
   std::string simConfig = "config/sim/jackal.yaml";
   std::string avoidanceConfig = "config/modules/collisionavoidance.yaml";
   double lateralAcceleration = 3.0;
+  double maxSpeed = 1.5;
   unsigned threads = 2;
   bool trace = false;
   PostureGains gains;
@@ -55,6 +57,7 @@ int main(int argc, char** argv) {
       ("world", po::value(&worlds)->required(), "BARN worlds (map_server YAML with a task)")
       ("sim-config", po::value(&simConfig)->default_value(simConfig), "the simulated robot (footprint, limits, laser)")
       ("config", po::value(&avoidanceConfig)->default_value(avoidanceConfig), "the Collision Avoidance's parameters")
+      ("max-speed", po::value(&maxSpeed)->default_value(maxSpeed), "m/s the chains may ask (at most the robot's)")
       ("lateral-acceleration", po::value(&lateralAcceleration)->default_value(lateralAcceleration),
        "m/s^2 the chains may ask on turns")
       ("kx", po::value(&gains.kx)->default_value(gains.kx), "tracking gain K_x, 1/s (PostureController.h)")
@@ -71,6 +74,7 @@ int main(int argc, char** argv) {
     setup.avoidance = loadCollisionAvoidanceConfig(avoidanceConfig);
     setup.avoidance.obstacleMap.laserForwardOffsetM = setup.sim.laser.forwardOffset;
     setup.drive.limits = limitsOf(setup.sim.robot, lateralAcceleration);
+    setup.drive.limits.maxVelocity = std::min(maxSpeed, setup.drive.limits.maxVelocity);
     setup.drive.periodSeconds = setup.sim.stepSeconds;
     setup.trace = trace;
     setup.drive.gains = gains;

@@ -1,0 +1,145 @@
+// Tests the Collision Avoidance's decisions with a robot that follows its chains exactly: it
+// drives the targets in free space, stops (or brakes short) when an obstacle appears on the chain
+// it drives, goes around a box on its path, and reports blocked once walled in for
+// blocked_wait_s.
+#include <cppunit/extensions/HelperMacros.h>
+
+#include <cmath>
+#include <vector>
+
+#include "core/nav/avoidance/CollisionAvoidance.h"
+
+using namespace rgnav;
+
+namespace {
+
+const Footprint kJackal = Footprint::rectangle(0.508, 0.43);
+
+// 10 x 10 m of 5 cm cells around the origin, free, with the cells of the boxes occupied.
+struct Box {
+  double x0, y0, x1, y1;
+};
+ObstacleGrid gridWith(const std::vector<Box>& boxes, Timestamp stamp) {
+  ObstacleGrid grid{"test", stamp, OccupancyGrid(200, 200, 0.05, {-5.0, -5.0}, Cell::Free)};
+  for (const Box& b : boxes)
+    for (double x = b.x0 + 0.025; x < b.x1; x += 0.05)
+      for (double y = b.y0 + 0.025; y < b.y1; y += 0.05) grid.cells.set(*grid.cells.cellOf({x, y}), Cell::Occupied);
+  return grid;
+}
+
+std::vector<Pose2D> straightTargets(double toX) {
+  std::vector<Pose2D> targets;
+  for (double x = 1.0; x <= toX + 1e-9; x += 1.0) targets.push_back({x, 0.0, 0.0});
+  return targets;
+}
+
+// A robot that is exactly where its chain's reference is.
+class PerfectRobot {
+ public:
+  explicit PerfectRobot(const MotionLimits& limits) : limits_(limits) {}
+  RobotState at(Timestamp t) const {
+    if (!chain_) return {t, standing_, 0.0, 0.0};
+    const ReferenceState ref = timed_->stateAt(std::max(0.0, t - chain_->startTime));
+    return {t, ref.pose, ref.velocity, ref.rotational};
+  }
+  void drive(const DriveChain& chain, Timestamp t) {
+    standing_ = at(t).pose;
+    chain_ = chain;
+    timed_.emplace(chain.chain, limits_, chain.startSpeed, 0.0);
+  }
+
+ private:
+  MotionLimits limits_;
+  Pose2D standing_;
+  std::optional<DriveChain> chain_;
+  std::optional<TimedTrajectory> timed_;
+};
+
+}  // namespace
+
+class CollisionAvoidanceTest : public CppUnit::TestFixture {
+  CPPUNIT_TEST_SUITE(CollisionAvoidanceTest);
+  CPPUNIT_TEST(drivesTheTargetsInFreeSpace);
+  CPPUNIT_TEST(stopsForAnObstacleAppearingOnItsChain);
+  CPPUNIT_TEST(goesAroundABox);
+  CPPUNIT_TEST(reportsBlockedWhenWalledIn);
+  CPPUNIT_TEST_SUITE_END();
+
+ public:
+  void drivesTheTargetsInFreeSpace() {
+    CollisionAvoidance cam({}, kJackal, limits_);
+    cam.setTargets(straightTargets(3.0));
+    const AvoidanceDecision d = cam.update({0.0, {}, 0.0, 0.0}, std::span(&free_, 1));
+    CPPUNIT_ASSERT(d.action == AvoidanceAction::Drive);
+    CPPUNIT_ASSERT(d.chain);
+    CPPUNIT_ASSERT_DOUBLES_EQUAL(0.1, d.chain->startTime, 1e-9);  // one planning latency ahead
+    CPPUNIT_ASSERT_DOUBLES_EQUAL(3.0, d.chain->chain.end().x, 1e-3);
+    CPPUNIT_ASSERT_DOUBLES_EQUAL(0.0, d.chain->chain.end().y, 1e-3);
+    // Nothing changed: the chain is kept.
+    CPPUNIT_ASSERT(cam.update({0.1, {}, 0.0, 0.0}, std::span(&free_, 1)).action == AvoidanceAction::Keep);
+  }
+
+  void stopsForAnObstacleAppearingOnItsChain() {
+    CollisionAvoidance cam({}, kJackal, limits_);
+    PerfectRobot robot(limits_);
+    cam.setTargets(straightTargets(4.0));
+    robot.drive(*cam.update(robot.at(0.0), std::span(&free_, 1)).chain, 0.0);
+    // A wall across the way appears 2.5 m ahead while the robot drives.
+    const ObstacleGrid walled = gridWith({{2.5, -5.0, 2.7, 5.0}}, 1.0);
+    const RobotState state = robot.at(1.0);
+    CPPUNIT_ASSERT(state.velocity > 0.3);
+    const AvoidanceDecision d = cam.update(state, std::span(&walled, 1));
+    CPPUNIT_ASSERT(d.action != AvoidanceAction::Keep);
+    CPPUNIT_ASSERT(d.chain);
+    // The new chain stops with the robot's front before the wall.
+    const Pose2D end = d.chain->chain.end();
+    CPPUNIT_ASSERT(end.x + 0.254 < 2.5);
+    CPPUNIT_ASSERT(!kJackal.overlapsGrid(walled.cells, end));
+  }
+
+  void goesAroundABox() {
+    CollisionAvoidance cam({}, kJackal, limits_);
+    PerfectRobot robot(limits_);
+    cam.setTargets(straightTargets(4.0));
+    // A post between the targets at 1 and 2 m.
+    const ObstacleGrid boxed = gridWith({{1.4, -0.2, 1.6, 0.2}}, 0.0);
+    double aside = 0.0;
+    bool reached = false;
+    for (int i = 0; i < 300 && !reached; ++i) {
+      const double t = 0.1 * i;
+      const RobotState state = robot.at(t);
+      const AvoidanceDecision d = cam.update(state, std::span(&boxed, 1));
+      if (d.chain) robot.drive(*d.chain, t);
+      reached = d.action == AvoidanceAction::GoalReached;
+      CPPUNIT_ASSERT(!kJackal.overlapsGrid(boxed.cells, state.pose));
+      aside = std::max(aside, std::abs(state.pose.y));
+      CPPUNIT_ASSERT(d.action != AvoidanceAction::Blocked);
+    }
+    CPPUNIT_ASSERT(reached);
+    CPPUNIT_ASSERT(aside > 0.3);  // it left the line to pass the post (and came back to the goal)
+  }
+
+  void reportsBlockedWhenWalledIn() {
+    CollisionAvoidanceConfig config;
+    config.blockedWaitS = 2.0;
+    CollisionAvoidance cam(config, kJackal, limits_);
+    cam.setTargets(straightTargets(3.0));
+    // Walls all around, 0.35 m from the robot: too close to turn on the spot with the margin.
+    const ObstacleGrid walled = gridWith(
+        {{0.35, -1.0, 0.55, 1.0}, {-0.55, -1.0, -0.35, 1.0}, {-0.55, 0.35, 0.55, 0.55}, {-0.55, -0.55, 0.55, -0.35}}, 0.0);
+    AvoidanceAction last = AvoidanceAction::Keep;
+    double blockedAt = -1.0;
+    for (int i = 0; i <= 30 && blockedAt < 0.0; ++i) {
+      last = cam.update({0.1 * i, {}, 0.0, 0.0}, std::span(&walled, 1)).action;
+      CPPUNIT_ASSERT(last == AvoidanceAction::Wait || last == AvoidanceAction::Blocked);
+      if (last == AvoidanceAction::Blocked) blockedAt = 0.1 * i;
+    }
+    CPPUNIT_ASSERT_DOUBLES_EQUAL(2.0, blockedAt, 1e-6);
+  }
+
+ private:
+  MotionLimits limits_;
+  ObstacleGrid free_ = gridWith({}, 0.0);
+};
+
+CPPUNIT_TEST_SUITE_REGISTRATION(CollisionAvoidanceTest);
