@@ -166,7 +166,7 @@ int main(int argc, char** argv) {
     if (!parseCommandLine(argc, argv, description)) return 0;
     catchInterruptions();
     const PreparedCrowd prepared = prepareCrowd(options);
-    CrowdSet set(crowdSetOptions(options, prepared), prepared.map);
+    CrowdSet set(crowdSetOptions(options, prepared), &prepared.map);
     set.start();
     const double deceleration = loadSimulationConfig(options.simConfig).robot.maxTranslationalAcceleration;
     MotionFaults faults(set.cluster(), kills, deceleration, faultSeed);
