@@ -4,7 +4,6 @@
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
-#include <sstream>
 
 #include "clientlibs/common/ModuleClient.h"
 #include "core/common/AtomicFile.h"
@@ -15,15 +14,6 @@ namespace po = boost::program_options;
 
 namespace rgnav {
 namespace {
-
-Pose2D parsePose(const std::string& text) {
-  Pose2D pose;
-  char c1 = 0, c2 = 0;
-  std::istringstream in(text);
-  if (!(in >> pose.x >> c1 >> pose.y >> c2 >> pose.theta) || c1 != ',' || c2 != ',')
-    throw ConfigError("--start wants x,y,theta (metres, metres, radians), not '" + text + "'");
-  return pose;
-}
 
 // The cached map if the cache holds one, else the map made now (and cached).
 RgMapState officeMap(const CrowdEvaluationOptions& o, const LoadedWorld& world) {
@@ -56,7 +46,9 @@ void CrowdEvaluationOptions::addTo(po::options_description& d) {
       ("sim-config", po::value(&simConfig)->default_value(simConfig), "simulator parameters")
       ("models", po::value(&models)->default_value(models), "gateway HMMs for mapping the world")
       ("map-cache", po::value(&mapCache)->default_value(mapCache), "folder of the world's RG map checkpoint (made if missing)")
-      ("start", po::value(&start)->default_value(start), "robot start x,y,theta")
+      ("start-x", po::value(&start.x)->default_value(start.x), "robot start, m")
+      ("start-y", po::value(&start.y)->default_value(start.y), "robot start, m")
+      ("start-theta", po::value(&start.theta)->default_value(start.theta), "robot start heading, rad")
       ("people", po::value(&people)->default_value(people), "people walking in the world")
       ("goals", po::value(&goals.count)->default_value(goals.count), "goals to drive")
       ("seed", po::value(&goals.seed)->default_value(goals.seed), "seed of the goals and the people")
@@ -67,7 +59,7 @@ void CrowdEvaluationOptions::addTo(po::options_description& d) {
 }
 
 PreparedCrowd prepareCrowd(const CrowdEvaluationOptions& o) {
-  PreparedCrowd p{loadWorld(o.world), parsePose(o.start), {}, {}};
+  PreparedCrowd p{loadWorld(o.world), o.start, {}, {}};
   if (!p.world.truth) throw ConfigError(o.world + ": no ground-truth rooms to put goals in");
   p.map = officeMap(o, p.world);
   p.goals = crowdGoals(p.world.grid, *p.world.truth, p.start, o.goals);

@@ -22,7 +22,7 @@ struct CrowdEvaluationOptions {
   std::string simConfig = "config/sim/default.yaml";
   std::string models = "config/gateways/gateway-hmms.txt";
   std::string mapCache = "out/crowd";  // the office RG map's checkpoint, made once
-  std::string start = "1.5,7,0";
+  Pose2D start{1.5, 7.0, 0.0};  // the main hallway's west end, facing east
   int people = 8;
   CrowdGoalOptions goals;
   CrowdRunOptions run;

@@ -17,7 +17,7 @@ namespace rgnav {
 
 struct CrowdRunOptions {
   double toleranceM = 0.3;
-  double goalTimeoutS = 180.0;
+  double goalTimeoutS = 120.0;
   bool verbose = true;  // a line per goal on stdout
 };
 
