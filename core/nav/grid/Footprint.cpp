@@ -1,6 +1,8 @@
 // Footprint: exact overlap tests of a disk or a rotated rectangle against disks (closest point of
 // the shape to the disk's centre) and against grid cells (the disk: DiskFootprint; the rectangle:
-// separating axes of two convex polygons, the cell square's two and the rectangle's two).
+// the separating axis theorem for two convex polygons, as for oriented boxes in Gottschalk, Lin,
+// Manocha, "OBBTree", SIGGRAPH 1996: the cell square's two axes and the rectangle's two). Thesis
+// 5.5 checks the robot's swept outline against obstacles; this is the outline at one pose.
 #include "core/nav/grid/Footprint.h"
 
 #include <algorithm>

@@ -71,8 +71,10 @@ StepOutcome DiffDriveRobot::step(double dt, const OccupancyGrid& grid, std::span
   const double v = velocity_.translational;
   const double w = velocity_.rotational;
   const double spacing = grid.resolution() / 4.0;
-  // The farthest any footprint point travels: the centre's arc plus the turn at the circumradius.
-  const double travel = (std::abs(v) + std::abs(w) * config_.footprint.circumradius()) * dt;
+  // The farthest any footprint point travels: the centre's arc plus the turn at the circumradius
+  // (a disk around the rotation centre sweeps nothing by turning).
+  const double turnReach = config_.footprint.shape == Footprint::Shape::Disk ? 0.0 : config_.footprint.circumradius();
+  const double travel = (std::abs(v) + std::abs(w) * turnReach) * dt;
   const int samples = std::max(1, static_cast<int>(std::ceil(travel / spacing)));
   const Pose2D start = pose_;
   Pose2D lastFree = start;

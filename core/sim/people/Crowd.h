@@ -1,10 +1,11 @@
-// Crowd: people walking through a simulated world, the moving obstacles of issue "Motion". Each
-// person is a cylinder (a disk seen from above) that walks at its own speed, drawn from
-// [minSpeed, maxSpeed] for every leg, between random points of the free space it can reach,
-// along a path around the walls planned on the world grid (GridPlanner with the person's radius;
-// its line-of-sight shortcuts make the legs straight where there is room). Seeded with its own
-// random number generator: the same world, configuration, seed and robot motion give the same
-// walks, bit for bit.
+// Crowd: people walking through a simulated world, the moving obstacles of issue "Motion" (the
+// thesis's collision avoidance, 5.5, must react to them; the thesis itself has no people model,
+// only clutter by people in real scans, 4.1.2). Each person is a cylinder (a disk seen from
+// above) that walks at its own speed, drawn from [minSpeed, maxSpeed] for every leg, between
+// random points of the free space it can reach, along a path around the walls planned on the
+// world grid (GridPlanner with the person's radius; its line-of-sight shortcuts make the legs
+// straight where there is room). Seeded with its own random number generator: the same world,
+// configuration, seed and robot motion give the same walks, bit for bit.
 // Deliberate simplifications: people walk through each other (only walls and the robot stop
 // them) and do not see the robot coming; a person whose next step would overlap the robot stops
 // short of it (it never pushes through the robot) and turns to a new goal. People never start
