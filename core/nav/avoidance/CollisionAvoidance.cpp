@@ -28,8 +28,10 @@ constexpr double kMaxLeadM = 3.0;
 constexpr double kMinChainM = 0.15;
 // Straightening out from a turn uses this share of the rotational acceleration.
 constexpr double kUnwindShare = 0.9;
-// A chain cut short stops this far before where it would come too close: room to turn away.
-constexpr double kCutBackM = 0.3;
+// Chains are cut back in these steps to where the robot can turn on the spot, with this much
+// more than the margin around it (the robot stops within a few centimetres of the chain's end).
+constexpr double kTurnableStepM = 0.05;
+constexpr double kTurnSlackM = 0.05;
 // What cutting a chain short costs: a chain that reaches its end beats one that stops early.
 constexpr double kCutPenaltyS = 2.0;
 
@@ -82,7 +84,10 @@ CollisionAvoidance::PlanStart CollisionAvoidance::planStart(const RobotState& st
             segmentStart += segment.length;
           }
         }
-        return {{ref.pose, ref.velocity, chain.curvatureAt(ref.s)}, sliceChain(chain, ref.s, leadEnd), ref.s,
+        // At the robot's speed where it runs ahead of the reference: the next chain must leave
+        // it room to stop.
+        const double speed = std::max(ref.velocity, state.velocity);
+        return {{ref.pose, speed, chain.curvatureAt(ref.s)}, sliceChain(chain, ref.s, leadEnd), ref.s,
                 chain.length() - ref.s};
       }
     }
@@ -166,13 +171,13 @@ std::optional<CollisionAvoidance::Scored> CollisionAvoidance::bestCandidate(cons
   std::optional<Scored> best;
   for (Candidate& candidate : candidatesFrom(start)) {
     const SweptCheck check = checkSwept(clearance, candidate.chain, footprint_, checkOptions());
+    // The chain must end where the robot can turn on the spot (it cannot back out): cut it back
+    // from where it stops being free, or from its end, to such a pose.
+    const double end = check.clear ? candidate.chain.length() : check.freeLength;
+    const double keep = turnableUntil(candidate.chain, end, clearance);
+    if (keep < kMinChainM) continue;
     double cost = 0.0;
-    if (!check.clear) {
-      // Room to turn away before the obstacle if the robot can stop there, else up to it.
-      const double keep = check.freeLength - kCutBackM >= std::max(kMinChainM, brakingDistance(start.state.speed))
-                              ? check.freeLength - kCutBackM
-                              : check.freeLength;
-      if (keep < kMinChainM) continue;
+    if (keep < candidate.chain.length() - 1e-9) {
       candidate.chain = sliceChain(candidate.chain, 0.0, keep);
       cost += kCutPenaltyS;
     }
@@ -188,6 +193,15 @@ std::optional<CollisionAvoidance::Scored> CollisionAvoidance::bestCandidate(cons
     if (!best || cost < best->cost) best = Scored{std::move(candidate), std::move(*timed), cost};
   }
   return best;
+}
+
+double CollisionAvoidance::turnableUntil(const TrajectoryChain& chain, double end,
+                                         const ObstacleClearance& clearance) const {
+  const Footprint turning = Footprint::disk(footprint_.circumradius());
+  const double needed = config_.safetyMarginM + kTurnSlackM;
+  for (double s = end; s >= kMinChainM; s -= kTurnableStepM)
+    if (clearance.footprintClearance(turning, chain.poseAt(s), needed) >= needed) return s;
+  return 0.0;
 }
 
 double CollisionAvoidance::brakingDistance(double speed) const {

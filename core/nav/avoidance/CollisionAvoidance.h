@@ -11,8 +11,9 @@
 //   Blocked     waited blockedWaitS without a free chain: the caller asks the planner for a new
 //               plan (thesis 5.4: a blocked door raises its edge's cost) and sets new targets;
 //   GoalReached standing within goalToleranceM of the last target.
-// Where no candidate is free to its end, the one that gets farthest is cut short before the
-// obstacle (and driven if the robot can still stop there): the robot closes in and sees more.
+// Every chain ends where the robot can turn on the spot (its circumscribed disk keeps the margin),
+// since it cannot back out: a candidate that is not free to its end, or ends in a narrow place,
+// is cut back to such a pose (and driven if the robot can stop there): it closes in and sees more.
 // Deliberate differences to the thesis: no conic or elliptic segments (clothoids, arcs and
 // straights join every pair of poses), and moving obstacles are handled by re-checking at the
 // scan rate with a safety margin, not by predicting their motion.
@@ -90,6 +91,8 @@ class CollisionAvoidance {
   double pathLeftFrom(const Pose2D& end) const;
   std::vector<Candidate> candidatesFrom(const PlanStart& start) const;
   std::optional<Scored> bestCandidate(const PlanStart& start, const ObstacleClearance& clearance) const;
+  // The largest arc length up to `end` (in steps) where the robot could turn on the spot, or 0.
+  double turnableUntil(const TrajectoryChain& chain, double end, const ObstacleClearance& clearance) const;
   double brakingDistance(double speed) const;
   std::optional<TimedTrajectory> brakingChain(const PlanStart& start) const;
   AvoidanceDecision send(const RobotState& state, TimedTrajectory timed, AvoidanceAction action, std::string reason);

@@ -78,11 +78,12 @@ std::optional<std::vector<WorldPoint>> GoalSeeking::path(const OccupancyGrid& gr
 }
 
 std::optional<std::vector<Pose2D>> GoalSeeking::plan(const OccupancyGrid& obstacles, const Pose2D& from,
-                                                     WorldPoint goal) const {
+                                                     WorldPoint goal, double extraMarginM) const {
   const OccupancyGrid grid = obstaclesOnly(obstacles);
   const double inscribed = footprint_.inscribedRadius();
   const WorldPoint inside = insideGrid(grid, goal, kSnapReachM);
-  auto points = path(grid, {from.x, from.y}, inside, inscribed + config_.inflationMarginM);
+  auto points = path(grid, {from.x, from.y}, inside, inscribed + config_.inflationMarginM + extraMarginM);
+  if (!points && extraMarginM > 0.0) points = path(grid, {from.x, from.y}, inside, inscribed + config_.inflationMarginM);
   if (!points && config_.inflationMarginM > 0.0) points = path(grid, {from.x, from.y}, inside, inscribed);
   if (!points) return std::nullopt;
   if (std::hypot(inside.x - goal.x, inside.y - goal.y) > 1e-9) points->push_back(goal);

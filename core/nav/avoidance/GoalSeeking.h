@@ -24,7 +24,9 @@ class GoalSeeking {
   // Targets from `from` to `goal` over `obstacles` (Occupied cells; anything else free); a goal
   // outside the grid is approached through the nearest point inside it. nullopt when no path
   // exists even with the bare inscribed radius (the robot is walled in as far as it has seen).
-  std::optional<std::vector<Pose2D>> plan(const OccupancyGrid& obstacles, const Pose2D& from, WorldPoint goal) const;
+  // `extraMarginM` widens the inflation (after the Collision Avoidance found a path too narrow).
+  std::optional<std::vector<Pose2D>> plan(const OccupancyGrid& obstacles, const Pose2D& from, WorldPoint goal,
+                                          double extraMarginM = 0.0) const;
 
  private:
   std::optional<std::vector<WorldPoint>> path(const OccupancyGrid& grid, WorldPoint from, WorldPoint goal,
