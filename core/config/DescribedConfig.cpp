@@ -52,6 +52,10 @@ void ConfigReader::field(const char* key, std::size_t& target) {
   target = static_cast<std::size_t>(node_[key].asInteger(0, std::numeric_limits<std::int64_t>::max()));
 }
 
+void ConfigReader::field(const char* key, int& target) {
+  target = static_cast<int>(node_[key].asInteger(std::numeric_limits<int>::min(), std::numeric_limits<int>::max()));
+}
+
 void ConfigReader::field(const char* key, bool& target) { target = node_[key].asBool(); }
 
 void ConfigReader::degrees(const char* key, double& radians) {
@@ -62,6 +66,8 @@ void ConfigReader::degrees(const char* key, double& radians) {
 void ConfigWriter::field(const char* key, double& value) { line(key, shortest(value)); }
 
 void ConfigWriter::field(const char* key, std::size_t& value) { line(key, std::to_string(value)); }
+
+void ConfigWriter::field(const char* key, int& value) { line(key, std::to_string(value)); }
 
 void ConfigWriter::field(const char* key, bool& value) { line(key, value ? "true" : "false"); }
 

@@ -1,7 +1,7 @@
 // Strict YAML reading and complete YAML writing of any parameter struct that lists its fields in
 // a describe() function beside it (found by argument-dependent lookup):
 //   template <class V> void describe(V& v, ScanPointsConfig& c) {
-//     v.field("max_range_m", c.maxRange);               // double, std::size_t or bool, as in the code
+//     v.field("max_range_m", c.maxRange);               // double, std::size_t, int or bool, as in the code
 //     v.degrees("min_aperture_deg", c.minApertureRad);  // degrees in the file, radians in the code
 //     v.section("grid", c.grid);                        // a nested struct with its own describe()
 //   }
@@ -42,6 +42,7 @@ class ConfigReader {
   explicit ConfigReader(const ConfigNode& node) : node_(node) {}
   void field(const char* key, double& target);
   void field(const char* key, std::size_t& target);
+  void field(const char* key, int& target);
   void field(const char* key, bool& target);
   void degrees(const char* key, double& radians);
   template <class S>
@@ -66,6 +67,7 @@ class ConfigWriter {
  public:
   void field(const char* key, double& value);
   void field(const char* key, std::size_t& value);
+  void field(const char* key, int& value);
   void field(const char* key, bool& value);
   void degrees(const char* key, double& radians);
   template <class S>

@@ -13,12 +13,14 @@ namespace rgnav {
 struct InnerParams {
   double angleRad = 5.0 * M_PI / 180.0;
   bool restrictive = true;
+  int offset = -3;
 };
 
 template <class V>
 void describe(V& v, InnerParams& c) {
   v.degrees("angle_deg", c.angleRad);
   v.field("restrictive", c.restrictive);
+  v.field("offset", c.offset);
 }
 
 struct OuterParams {
@@ -43,7 +45,8 @@ const std::string kDefaults =
     "min_points: 20\n"
     "inner:\n"
     "  angle_deg: 5\n"
-    "  restrictive: true\n";
+    "  restrictive: true\n"
+    "  offset: -3\n";
 
 rgnav::OuterParams parse(const std::string& text) { return rgnav::parseDescribed<rgnav::OuterParams>(text, "t.yaml"); }
 
@@ -89,11 +92,13 @@ class DescribedConfigTest : public CppUnit::TestFixture {
     odd.minPoints = 7;
     odd.inner.angleRad = 0.123456789;  // no short number of degrees
     odd.inner.restrictive = false;
+    odd.inner.offset = 12;
     const rgnav::OuterParams read = parse(rgnav::describedYaml(odd));
     CPPUNIT_ASSERT_EQUAL(odd.rangeM, read.rangeM);
     CPPUNIT_ASSERT_EQUAL(odd.minPoints, read.minPoints);
     CPPUNIT_ASSERT_EQUAL(odd.inner.angleRad, read.inner.angleRad);
     CPPUNIT_ASSERT_EQUAL(odd.inner.restrictive, read.inner.restrictive);
+    CPPUNIT_ASSERT_EQUAL(odd.inner.offset, read.inner.offset);
   }
 
   void rejectsUnknownKey() {
@@ -112,7 +117,9 @@ class DescribedConfigTest : public CppUnit::TestFixture {
     expectConfigError(edited("range_m: 0.1", "range_m: near"), "range_m: wrong type, expected a number");
     expectConfigError(edited("min_points: 20", "min_points: 2.5"), "min_points: wrong type, expected an integer");
     expectConfigError(edited("restrictive: true", "restrictive: 1.5"), "inner.restrictive: wrong type");
-    expectConfigError(edited("inner:\n  angle_deg: 5\n  restrictive: true\n", "inner: 3\n"),
+    expectConfigError(edited("offset: -3", "offset: -3.5"), "inner.offset: wrong type, expected an integer");
+    expectConfigError(edited("offset: -3", "offset: 3000000000"), "inner.offset: out of range");
+    expectConfigError(edited("inner:\n  angle_deg: 5\n  restrictive: true\n  offset: -3\n", "inner: 3\n"),
                       "inner: wrong type, expected a mapping");
     expectConfigError("range_m: [0.1", "not YAML");
   }

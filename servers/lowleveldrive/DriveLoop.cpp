@@ -122,8 +122,8 @@ std::optional<OdometryReading> DriveLoop::newestOdometry() {
       latest_.reset();
       batch = base_.odometrySince(0, kOdometryBatch);
     }
-    if (batch.latestId > 1 && (batch.records.empty() || batch.records.back().id < batch.latestId))
-      batch = base_.odometrySince(batch.latestId - 1, 1);  // far behind: only the newest matters
+    const DataId have = batch.records.empty() ? (latest_ ? latest_->id : 0) : batch.records.back().id;
+    if (have < batch.latestId) batch = base_.odometrySince(batch.latestId - 1, 1);  // behind: the newest is enough
     if (!batch.records.empty()) latest_ = batch.records.back();
     baseResult("base_odometry", odometryError_, "");
   } catch (const Error& e) {

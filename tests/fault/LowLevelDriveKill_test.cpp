@@ -59,8 +59,10 @@ class LowLevelDriveKillTest : public CppUnit::TestFixture {
           return now.stamp - rest.stamp >= 0.5;
         },
         "the robot to come to rest", std::chrono::seconds(30), std::chrono::milliseconds(20));
-    for (TrueState earlier = set.truthAt(rest.scan - 1); samePose(earlier.pose, rest.pose); earlier = set.truthAt(rest.scan - 1))
-      rest = earlier;  // the first scan at rest, however late the polling saw it
+    // The first scan at rest, however late the polling saw it.
+    for (TrueState earlier = set.truthAt(rest.scan - 1); samePose(earlier.pose, rest.pose);
+         earlier = set.truthAt(rest.scan - 1))
+      rest = earlier;
     const double stoppedAfterS = rest.stamp - atKill.stamp;
     const double boundS = kCommandTimeoutS + atKill.translationalVelocity / kBaseDecelerationMps2 + kMarginS;
     const double rolledM = std::hypot(rest.pose.x - atKill.pose.x, rest.pose.y - atKill.pose.y);

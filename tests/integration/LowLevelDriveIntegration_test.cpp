@@ -39,7 +39,8 @@ class LowLevelDriveIntegrationTest : public CppUnit::TestFixture {
     CPPUNIT_ASSERT_EQUAL(std::uint64_t(1), done.drive.chainId);
     CPPUNIT_ASSERT(done.commandsSent > 0);
 
-    // Standing: two scans 0.3 s of simulated time apart see the same true pose.
+    // It stays there: two scans 0.3 s of simulated time apart see the robot within 2 mm (a robot
+    // driving on at even 0.05 m/s would be 15 mm on).
     TrueState first = set.latestTruth();
     waitUntil([&] { return set.latestTruth().stamp > first.stamp + 0.3; }, "the simulation to go on");
     const TrueState still = set.latestTruth();
@@ -52,8 +53,8 @@ class LowLevelDriveIntegrationTest : public CppUnit::TestFixture {
                 static_cast<unsigned long long>(done.commandsSent), done.loopPeriodP99Seconds * 1000.0);
     CPPUNIT_ASSERT(positionError < 0.05);
     CPPUNIT_ASSERT(yawErrorDeg < 3.0);
-    CPPUNIT_ASSERT_DOUBLES_EQUAL(first.pose.x, still.pose.x, 1e-6);
-    CPPUNIT_ASSERT_DOUBLES_EQUAL(first.pose.y, still.pose.y, 1e-6);
+    CPPUNIT_ASSERT_DOUBLES_EQUAL(first.pose.x, still.pose.x, 0.002);
+    CPPUNIT_ASSERT_DOUBLES_EQUAL(first.pose.y, still.pose.y, 0.002);
 
     // A retry of the chain accepted last changes nothing: it is not driven again.
     drive.setChain(chain);

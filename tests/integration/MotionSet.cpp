@@ -22,9 +22,10 @@ std::string writtenFile(const std::string& path, const std::string& text) {
 
 MotionSet::MotionSet(const std::string& setYaml, SimulatorDriving driving) : scratch_("rgnav-motion-set") {
   const std::string simulation = writtenFile(scratch_.file("noiseless.yaml"), kNoiselessSimulation);
-  const std::string start = std::to_string(kStart.x) + "," + std::to_string(kStart.y) + "," + std::to_string(kStart.theta);
-  std::vector<std::string> simulator{TestCluster::program("rgnav-sim"), "--world", shippedConfigFile("worlds/office.yaml"),
-                                     "--config", simulation, "--start", start};
+  const std::string start =
+      std::to_string(kStart.x) + "," + std::to_string(kStart.y) + "," + std::to_string(kStart.theta);
+  std::vector<std::string> simulator{TestCluster::program("rgnav-sim"), "--world",
+                                     shippedConfigFile("worlds/office.yaml"), "--config", simulation, "--start", start};
   if (driving == SimulatorDriving::Tour) {
     simulator.insert(simulator.end(), {"--clock", "lockstep", "--tour"});
   } else {

@@ -31,6 +31,8 @@ template <class V>
 void describe(V& v, LowLevelDriveConfig& c) {
   v.field("period_s", c.periodSeconds);
   v.field("odometry_timeout_s", c.odometryTimeoutSeconds);
+  v.field("command_delay_ticks", c.commandDelayTicks);
+  v.field("reference_margin", c.referenceMargin);
   v.section("limits", c.limits);
   v.section("gains", c.gains);
 }
