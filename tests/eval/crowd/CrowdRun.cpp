@@ -74,6 +74,7 @@ GoalOutcome driveOne(CollisionAvoidanceClient& cam, TruePoseProbe& probe, const 
     }
     outcome.finalState = toString(status->phase);
     outcome.replans = status->replans;
+    outcome.reason = status->reason;
     if (status->phase == DrivePhase::Failed) break;
     if (status->phase == DrivePhase::Reached && outcome.finalErrorM <= options.toleranceM) {
       outcome.reached = true;
@@ -112,9 +113,9 @@ CrowdOutcome driveGoals(const ClientSettings& settings, const std::vector<Eigen:
     outcome.goals.push_back(driveOne(cam, probe, goals[i], options));
     const GoalOutcome& g = outcome.goals.back();
     if (options.verbose)
-      std::printf("goal %2zu (%6.2f, %5.2f): %-9s %6.1f s %6.1f m error %.2f m replans %u\n", i + 1, g.goal.x(),
+      std::printf("goal %2zu (%6.2f, %5.2f): %-9s %6.1f s %6.1f m error %.2f m replans %u %s\n", i + 1, g.goal.x(),
                   g.goal.y(), g.reached ? "reached" : g.finalState.c_str(), g.seconds, g.distanceM, g.finalErrorM,
-                  g.replans);
+                  g.replans, g.reason.c_str());
     std::fflush(stdout);
   }
   return outcome;

@@ -29,6 +29,7 @@ struct GoalOutcome {
   double distanceM = 0.0;  // true distance driven
   double finalErrorM = 0.0;
   unsigned replans = 0;
+  std::string reason;      // the CAM's last reason (why it failed or waits)
 };
 
 struct CrowdOutcome {
