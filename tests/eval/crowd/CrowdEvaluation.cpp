@@ -67,7 +67,7 @@ PreparedCrowd prepareCrowd(const CrowdEvaluationOptions& o) {
 }
 
 CrowdSetOptions crowdSetOptions(const CrowdEvaluationOptions& o, const PreparedCrowd& p) {
-  return {o.world, o.simConfig, p.start, o.people, o.goals.seed};
+  return {o.world, o.simConfig, p.start, o.people, o.goals.seed, ""};
 }
 
 SimulatorCounters simulatorCounters(const ClientSettings& settings) {

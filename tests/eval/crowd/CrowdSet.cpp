@@ -45,7 +45,8 @@ CrowdSet::CrowdSet(const CrowdSetOptions& o, const RgMapState* map)
            {TestCluster::program("rgnav-collisionavoidance"), "--config",
             TestCluster::moduleConfig("collisionavoidance"), "--pose-source", "groundtruth", "--trace"},
            {"CollisionAvoidance"},
-           {"Simulator", "LowLevelDrive", "PathPlanning"}}})) {
+           {"Simulator", "LowLevelDrive", "PathPlanning"}}},
+          o.setYaml)) {
   if (map) writeKernelCheckpoint(*map, cluster_->dir() + "/run/state/RGMappingKernel");
 }
 

@@ -21,6 +21,7 @@ struct CrowdSetOptions {
   Pose2D start;
   int people = 8;
   std::uint64_t seed = 1;
+  std::string setYaml;    // extra top-level YAML of the set (e.g. faster restarts)
 };
 
 class CrowdSet {
