@@ -28,6 +28,9 @@ constexpr double kMaxLeadM = 3.0;
 constexpr double kMinChainM = 0.15;
 // Straightening out from a turn uses this share of the rotational acceleration.
 constexpr double kUnwindShare = 0.9;
+// A chain with little left is replaced at most this often (each new chain restarts the drive's
+// reference, which must get going).
+constexpr double kRefreshPeriodS = 0.5;
 // Chains are cut back in these steps to where the robot can turn on the spot, with this much
 // more than the margin around it (the robot stops within a few centimetres of the chain's end).
 constexpr double kTurnableStepM = 0.05;
@@ -84,10 +87,7 @@ CollisionAvoidance::PlanStart CollisionAvoidance::planStart(const RobotState& st
             segmentStart += segment.length;
           }
         }
-        // At the robot's speed where it runs ahead of the reference: the next chain must leave
-        // it room to stop.
-        const double speed = std::max(ref.velocity, state.velocity);
-        return {{ref.pose, speed, chain.curvatureAt(ref.s)}, sliceChain(chain, ref.s, leadEnd), ref.s,
+        return {{ref.pose, ref.velocity, chain.curvatureAt(ref.s)}, sliceChain(chain, ref.s, leadEnd), ref.s,
                 chain.length() - ref.s};
       }
     }
@@ -103,8 +103,12 @@ CollisionAvoidance::PlanStart CollisionAvoidance::planStart(const RobotState& st
   return {{ahead, speed, speed > kStandingSpeed ? state.rotational / speed : 0.0, false}, {}, 0.0, 0.0};
 }
 
+double CollisionAvoidance::margin() const {
+  return escaping_ ? std::min(config_.safetyMarginM, config_.escapeMarginM) : config_.safetyMarginM;
+}
+
 SweptCheckOptions CollisionAvoidance::checkOptions() const {
-  return {config_.safetyMarginM, config_.sampleStepM, config_.comfortClearanceM};
+  return {margin(), config_.sampleStepM, config_.comfortClearanceM};
 }
 
 bool CollisionAvoidance::currentStillFree(const RobotState& state, const ObstacleClearance& clearance) const {
@@ -198,7 +202,7 @@ std::optional<CollisionAvoidance::Scored> CollisionAvoidance::bestCandidate(cons
 double CollisionAvoidance::turnableUntil(const TrajectoryChain& chain, double end,
                                          const ObstacleClearance& clearance) const {
   const Footprint turning = Footprint::disk(footprint_.circumradius());
-  const double needed = config_.safetyMarginM + kTurnSlackM;
+  const double needed = margin() + kTurnSlackM;
   for (double s = end; s >= kMinChainM; s -= kTurnableStepM)
     if (clearance.footprintClearance(turning, chain.poseAt(s), needed) >= needed) return s;
   return 0.0;
@@ -236,6 +240,7 @@ AvoidanceDecision CollisionAvoidance::send(const RobotState& state, TimedTraject
   lastPlan_ = state.stamp;
   targetsChanged_ = false;
   braking_ = false;
+  escaping_ = false;  // one chain with the escape margin, then the full margin again
   return {action, std::move(drive), std::move(reason)};
 }
 
@@ -243,6 +248,7 @@ AvoidanceDecision CollisionAvoidance::wait(const RobotState& state, const PlanSt
   if (!waitingSince_) waitingSince_ = state.stamp;
   if (state.stamp - *waitingSince_ >= config_.blockedWaitS && std::abs(state.velocity) < kStandingSpeed) {
     waitingSince_ = state.stamp;
+    escaping_ = true;
     return {AvoidanceAction::Blocked, std::nullopt, "no free chain for " + std::to_string(config_.blockedWaitS) + " s"};
   }
   if (!currentFree && !braking_) {
@@ -276,7 +282,8 @@ AvoidanceDecision CollisionAvoidance::update(const RobotState& state, std::span<
   const bool currentFree = currentStillFree(state, clearance);
   const bool endsAtGoal = current_ && distance(current_->chain.end(), goal) <= config_.goalToleranceM;
   const bool running = start.leftOnCurrent > 0.0;
-  const bool refresh = !endsAtGoal && start.leftOnCurrent < config_.refreshDistanceM;
+  const bool refresh = !endsAtGoal && start.leftOnCurrent < config_.refreshDistanceM &&
+                       state.stamp - lastPlan_ >= kRefreshPeriodS;
   const bool newTargets = targetsChanged_ && (!running || state.stamp - lastPlan_ >= config_.replanPeriodS);
   if (currentFree && running && !refresh && !newTargets) return {AvoidanceAction::Keep, std::nullopt, "chain free"};
   if (currentFree && endsAtGoal && !newTargets) return {AvoidanceAction::Keep, std::nullopt, "arriving"};

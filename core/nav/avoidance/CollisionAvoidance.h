@@ -10,6 +10,8 @@
 //   Wait        no chain is free: stand (the decision may carry a chain that brakes), retry;
 //   Blocked     waited blockedWaitS without a free chain: the caller asks the planner for a new
 //               plan (thesis 5.4: a blocked door raises its edge's cost) and sets new targets;
+//               the next chain may then keep only escapeMarginM (a robot that stopped too close
+//               to turn or go on gets out);
 //   GoalReached standing within goalToleranceM of the last target.
 // Every chain ends where the robot can turn on the spot (its circumscribed disk keeps the margin),
 // since it cannot back out: a candidate that is not free to its end, or ends in a narrow place,
@@ -85,6 +87,7 @@ class CollisionAvoidance {
   };
 
   PlanStart planStart(const RobotState& state) const;
+  double margin() const;
   SweptCheckOptions checkOptions() const;
   bool currentStillFree(const RobotState& state, const ObstacleClearance& clearance) const;
   void dropPassedTargets(const Pose2D& from);
@@ -108,6 +111,7 @@ class CollisionAvoidance {
   Timestamp lastPlan_ = 0.0;
   std::optional<Timestamp> waitingSince_;
   bool braking_ = false;  // the chain sent last brakes: no other until a free one
+  bool escaping_ = false;  // blocked: the next chain may come as close as escapeMarginM
   std::uint64_t nextId_ = 1;
 };
 

@@ -52,6 +52,7 @@ void validate(const CollisionAvoidanceConfig& c) {
   validate(c.candidates);
   validate(c.goalSeeking);
   nonNegative(c.safetyMarginM, "safety_margin_m");
+  nonNegative(c.escapeMarginM, "escape_margin_m");
   positive(c.sampleStepM, "sample_step_m");
   nonNegative(c.comfortClearanceM, "comfort_clearance_m");
   nonNegative(c.clearanceWeightSPerM, "clearance_weight_s_per_m");

@@ -29,7 +29,8 @@ BarnResult runBarnWorld(const std::string& worldYaml, const BarnSetup& setup) {
 
   Simulation sim(world.grid, setup.sim, task.start);
   LowLevelDrive drive(setup.drive);
-  MaplessNavigator navigator(setup.avoidance, setup.sim.robot.footprint, setup.drive.limits);
+  // The Collision Avoidance times chains as the drive will: within the reference limits.
+  MaplessNavigator navigator(setup.avoidance, setup.sim.robot.footprint, referenceLimits(setup.drive));
   // The odometry frame starts at the start pose: the goal is where the task puts it.
   navigator.setGoal(task.goal);
   const double start = sim.time();
