@@ -7,7 +7,10 @@
 
 #include "clientlibs/common/ModuleClient.h"
 #include "core/common/AtomicFile.h"
+#include "core/nav/planning/KernelPlanningMap.h"
+#include "core/nav/planning/RoutePlannerConfigYaml.h"
 #include "core/rgmap/kernel/RgMapCodec.h"
+#include "tests/eval/rooms/MappingPipeline.h"
 #include "tests/eval/crowd/OfficeRgMap.h"
 
 namespace po = boost::program_options;
@@ -45,6 +48,7 @@ void CrowdEvaluationOptions::addTo(po::options_description& d) {
       ("world", po::value(&world)->default_value(world), "world with ground-truth rooms")
       ("sim-config", po::value(&simConfig)->default_value(simConfig), "simulator parameters")
       ("models", po::value(&models)->default_value(models), "gateway HMMs for mapping the world")
+      ("planner-config", po::value(&plannerConfig)->default_value(plannerConfig), "PathPlanning parameters (goals it can reach)")
       ("map-cache", po::value(&mapCache)->default_value(mapCache), "folder of the world's RG map checkpoint (made if missing)")
       ("start-x", po::value(&start.x)->default_value(start.x), "robot start, m")
       ("start-y", po::value(&start.y)->default_value(start.y), "robot start, m")
@@ -62,7 +66,20 @@ PreparedCrowd prepareCrowd(const CrowdEvaluationOptions& o) {
   PreparedCrowd p{loadWorld(o.world), o.start, {}, {}};
   if (!p.world.truth) throw ConfigError(o.world + ": no ground-truth rooms to put goals in");
   p.map = officeMap(o, p.world);
-  p.goals = crowdGoals(p.world.grid, *p.world.truth, p.start, o.goals);
+  // Goals the PathPlanning module can plan to on this map (as the module will: the same planner,
+  // parameters and map), so that a goal counts against the motion, not against the map's extent.
+  const RgMappingKernel kernel(shippedPipelineConfig().kernel, p.map);
+  RoutePlanner planner(loadRoutePlannerConfig(o.plannerConfig));
+  planner.setMap(planningMapOf(kernel));
+  const auto reachable = [&](const Eigen::Vector2d& from, const Eigen::Vector2d& to) {
+    try {
+      planner.plan({from.x(), from.y(), 0.0}, PlanGoal::at(to));
+      return true;
+    } catch (const Error&) {
+      return false;
+    }
+  };
+  p.goals = crowdGoals(p.world.grid, *p.world.truth, p.start, o.goals, reachable);
   return p;
 }
 

@@ -21,6 +21,7 @@ struct CrowdEvaluationOptions {
   std::string world = "config/worlds/office.yaml";
   std::string simConfig = "config/sim/default.yaml";
   std::string models = "config/gateways/gateway-hmms.txt";
+  std::string plannerConfig = "config/modules/pathplanning.yaml";
   std::string mapCache = "out/crowd";  // the office RG map's checkpoint, made once
   Pose2D start{1.5, 7.0, 0.0};  // the main hallway's west end, facing east
   int people = 8;
@@ -38,7 +39,7 @@ struct PreparedCrowd {
 };
 
 // Loads the world, takes the RG map from the cache (or makes it and fills the cache) and draws
-// the goals. Prints what it does to stderr.
+// the goals among those the route planner reaches on the map. Prints what it does to stderr.
 PreparedCrowd prepareCrowd(const CrowdEvaluationOptions& options);
 
 CrowdSetOptions crowdSetOptions(const CrowdEvaluationOptions& options, const PreparedCrowd& prepared);

@@ -10,7 +10,7 @@
 namespace rgnav {
 
 std::vector<Eigen::Vector2d> crowdGoals(const OccupancyGrid& grid, const GroundTruth& truth, const Pose2D& start,
-                                        const CrowdGoalOptions& options) {
+                                        const CrowdGoalOptions& options, const GoalCheck& accept) {
   const ClearanceMap clearance(grid);
   std::map<int, std::vector<Eigen::Vector2d>> roomCells;  // room -> qualifying cell centres
   for (int row = 0; row < grid.height(); ++row)
@@ -30,12 +30,13 @@ std::vector<Eigen::Vector2d> crowdGoals(const OccupancyGrid& grid, const GroundT
   Eigen::Vector2d previous(start.x, start.y);
   int previousRoom = truth.roomAt({start.x, start.y});
   for (int attempt = 0; static_cast<int>(goals.size()) < options.count; ++attempt) {
-    if (attempt > 100000) throw InvalidArgumentError("no goal far enough from the previous one");
+    if (attempt > 100000) throw InvalidArgumentError("no acceptable goal far enough from the previous one");
     const int room = rooms[std::uniform_int_distribution<std::size_t>(0, rooms.size() - 1)(random)];
     if (room == previousRoom) continue;
     const auto& cells = roomCells[room];
     const Eigen::Vector2d goal = cells[std::uniform_int_distribution<std::size_t>(0, cells.size() - 1)(random)];
     if ((goal - previous).norm() < options.minSpacingM) continue;
+    if (accept && !accept(previous, goal)) continue;
     goals.push_back(goal);
     previous = goal;
     previousRoom = room;
