@@ -7,9 +7,10 @@
 //  - the Low-Level Drive killed: its last command holds until the Base's command timeout (0.5 s),
 //    then the robot brakes: allowed 0.5 s + v / max deceleration;
 //  - the Collision Avoidance killed: the drive finishes the last chain it was given, which ends at
-//    a standstill the CAM checked: allowed the chain's remaining time at the kill;
+//    a standstill the CAM checked: allowed the chain's remaining time at the kill + v / max
+//    deceleration (the robot brakes behind its reference);
 // each plus kToleranceS for the 10 Hz true-pose sampling. "Commanded again": the restarted drive
-// sends velocity commands / the drive got a chain from the restarted CAM. Every goal must still be
+// sends velocity commands / the restarted CAM has sent chains (its health's chains_sent). Every goal must still be
 // reached and the robot must not drive into anything. Lines: one per kill, the crowd line, last:
 //   motion_faults: kills=… lld_kills=… cam_kills=… recovered=… max_overrun_s=… goals=… reached=…
 //   robot_collisions=… result=PASS
@@ -24,6 +25,7 @@
 #include <random>
 #include <thread>
 
+#include "clientlibs/collisionavoidance/CollisionAvoidanceClient.h"
 #include "clientlibs/lowleveldrive/LowLevelDriveClient.h"
 #include "core/sim/SimulationConfigYaml.h"
 #include "tests/eval/crowd/CrowdEvaluation.h"
@@ -85,6 +87,7 @@ class MotionFaults {
   void run(const std::atomic<bool>& finished) {
     SpeedProbe speed(cluster_.clientSettings());
     LowLevelDriveClient drive(cluster_.clientSettings());
+    CollisionAvoidanceClient cam(cluster_.clientSettings());
     std::uniform_real_distribution<double> pause(3.0, 8.0);
     for (int i = 0; i < kills_ && !finished; ++i) {
       const std::string target = i % 2 == 0 ? "LowLevelDrive" : "CollisionAvoidance";
@@ -93,24 +96,24 @@ class MotionFaults {
       while (!finished && (Clock::now() < pauseUntil || speed.speed() < kDrivingMps))
         std::this_thread::sleep_for(std::chrono::milliseconds(50));
       if (finished) break;
-      records_.push_back(killOnce(target, speed, drive));
+      records_.push_back(killOnce(target, speed, drive, cam));
     }
   }
 
   const std::vector<KillRecord>& records() const { return records_; }
 
  private:
-  KillRecord killOnce(const std::string& target, SpeedProbe& speed, LowLevelDriveClient& drive) {
+  KillRecord killOnce(const std::string& target, SpeedProbe& speed, LowLevelDriveClient& drive,
+                      CollisionAvoidanceClient& cam) {
     KillRecord r;
     r.target = target;
     const auto victim = cluster_.waitFor(target, isRunning, "running");
-    const DriveReport before = drive.driveStatus();
     r.speedAtKill = speed.speed();
+    const DriveReport before = drive.driveStatus();
     const auto hit = Clock::now();
     ::kill(static_cast<pid_t>(victim.pid), SIGKILL);
-    r.allowedS = (target == "LowLevelDrive" ? kCommandTimeoutS + r.speedAtKill / deceleration_
-                                            : before.drive.remainingSeconds) +
-                 kToleranceS;
+    const double braking = r.speedAtKill / deceleration_;
+    r.allowedS = (target == "LowLevelDrive" ? kCommandTimeoutS : before.drive.remainingSeconds) + braking + kToleranceS;
     for (;;) {
       const double v = speed.speed();
       r.safeAfterS = std::chrono::duration<double>(Clock::now() - hit).count();
@@ -118,7 +121,7 @@ class MotionFaults {
         r.how = "stood";
         break;
       }
-      if (commandedAgain(target, victim.pid, before, drive)) {
+      if (commandedAgain(target, victim.pid, drive, cam)) {
         r.how = "commanded again";
         break;
       }
@@ -131,14 +134,17 @@ class MotionFaults {
     return r;
   }
 
-  // Whether a restarted module drives the robot again.
-  bool commandedAgain(const std::string& target, std::int64_t deadPid, const DriveReport& before,
-                      LowLevelDriveClient& drive) {
+  // Whether the restarted module drives the robot again: the drive sends velocity commands, the
+  // CAM has sent chains.
+  bool commandedAgain(const std::string& target, std::int64_t deadPid, LowLevelDriveClient& drive,
+                      CollisionAvoidanceClient& cam) {
     const ModuleProcessInfo now = cluster_.describe(target);
     if (!isRunning(now) || now.pid == deadPid) return false;
     try {
-      const DriveReport report = drive.driveStatus();
-      return target == "LowLevelDrive" ? report.commandsSent > 0 : report.drive.chainId > before.drive.chainId;
+      if (target == "LowLevelDrive") return drive.driveStatus().commandsSent > 0;
+      const ModuleStatusInfo status = cam.status();
+      const auto sent = status.counters.find("chains_sent");
+      return static_cast<std::int64_t>(status.pid) != deadPid && sent != status.counters.end() && sent->second > 0;
     } catch (const ModuleUnavailableError&) {
       return false;
     }
