@@ -6,19 +6,15 @@
 #include <string>
 
 #include "core/common/Errors.h"
+#include "core/common/ValueChecks.h"
 
 namespace rgnav {
 
 namespace {
 
-void positive(double value, const std::string& name) {
-  if (!(value > 0.0) || !std::isfinite(value)) throw ConfigError("collision avoidance: " + name + " must be positive");
-}
+void positive(double value, const std::string& name) { requirePositive(value, "collision avoidance: " + name); }
 
-void nonNegative(double value, const std::string& name) {
-  if (!(value >= 0.0) || !std::isfinite(value))
-    throw ConfigError("collision avoidance: " + name + " must not be negative");
-}
+void nonNegative(double value, const std::string& name) { requireNonNegative(value, "collision avoidance: " + name); }
 
 }  // namespace
 

@@ -41,7 +41,7 @@ struct CollisionAvoidanceConfig {
   CandidateConfig candidates;
   GoalSeekingConfig goalSeeking;
   double safetyMarginM = 0.05;          // the swept footprint keeps this from obstacles
-  double escapeMarginM = 0.02;          // ... for the one chain after a block
+  double escapeMarginM = 0.01;          // ... for the one chain after a block
   double sampleStepM = 0.03;            // poses sampled along chains
   double comfortClearanceM = 0.3;       // chains closer than margin + this pay extra
   double clearanceWeightSPerM = 4.0;    // seconds of cost per metre of clearance below comfort

@@ -7,6 +7,7 @@
 #include <string>
 
 #include "core/common/Errors.h"
+#include "core/common/ValueChecks.h"
 
 namespace rgnav {
 
@@ -16,9 +17,7 @@ constexpr std::uint8_t kHit = 2;
 }  // namespace
 
 void validate(const LaserObstacleMapConfig& c) {
-  const auto positive = [](double v, const char* name) {
-    if (!(v > 0.0) || !std::isfinite(v)) throw ConfigError(std::string("laser obstacle map: ") + name + " must be positive");
-  };
+  const auto positive = [](double v, const char* name) { requirePositive(v, std::string("laser obstacle map: ") + name); };
   positive(c.resolutionM, "resolution_m");
   positive(c.sizeM, "size_m");
   positive(c.maxClearRangeM, "max_clear_range_m");

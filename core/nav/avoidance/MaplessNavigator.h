@@ -4,8 +4,9 @@
 // each time blocked with a wider inflation (by kBlockedWidening, up to the footprint's
 // circumradius: the way the planner found was too narrow for the exact footprint), back to the
 // configured one once the robot has come a metre closer to the goal; the Collision Avoidance
-// decides on the scan's grid. The caller hands the decision's chain to
-// the Low-Level Drive. Everything in the odometry frame.
+// decides on the scan's grid. The caller hands the decision's chain to the Low-Level Drive.
+// Everything in the odometry frame. The goal seeking stands in for thesis 5.4's planning on the
+// RG map, the rest is the Collision Avoidance of 5.5.3.
 #pragma once
 
 #include <optional>
