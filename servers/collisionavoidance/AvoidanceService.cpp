@@ -160,6 +160,25 @@ DriveRecord AvoidanceService::takeDrive(std::uint64_t& generation) {
 
 bool AvoidanceService::step() {
   prepare();
+  std::uint64_t generation = 0;
+  const DriveRecord drive = takeDrive(generation);
+  bool stopNow = false;
+  {
+    std::lock_guard lock(mutex_);
+    std::swap(stopNow, stopOwed_);
+  }
+  if (stopNow) lld_.stop();
+  if (!drive.progress.active() && generation == appliedGeneration_) {
+    // Idle: no scans are read, so a lock-step simulator (the demo's tour) is not paced by a module
+    // that does not drive; the next drive starts from the newest scan.
+    following_ = false;
+    return stopNow;
+  }
+  if (!following_) {
+    const DataId latest = laser_.latestId();
+    if (latest > lastScan_ + 1) lastScan_ = latest - 1;
+    following_ = true;
+  }
   const auto batch = laser_.scansSince(lastScan_, kScanBatch);
   if (batch.records.empty()) return false;
   for (const LaserScan& scan : batch.records) obstacles_.add(scan);
@@ -169,14 +188,6 @@ bool AvoidanceService::step() {
   if (truth_) mapFromOdometry_ = mapFromOdometry(truth_->truePose(scan.id), scan.odometry);
   const RobotState state = robotState();
 
-  std::uint64_t generation = 0;
-  const DriveRecord drive = takeDrive(generation);
-  bool stopNow = false;
-  {
-    std::lock_guard lock(mutex_);
-    std::swap(stopNow, stopOwed_);
-  }
-  if (stopNow) lld_.stop();
   if (generation != appliedGeneration_) {  // a new drive (or a cancel): the core starts afresh
     appliedGeneration_ = generation;
     lastPlan_.reset();

@@ -101,7 +101,8 @@ class AvoidanceService {
   double stateStamp_ = 0.0;                          // its stamp (odometry clock)
   std::uint64_t chainBase_ = 0;
   std::uint64_t appliedGeneration_ = 0;
-  bool settled_ = false;  // the robot stood still once since the start
+  bool settled_ = false;    // the robot stood still once since the start
+  bool following_ = false;  // reading scans (a drive is active)
   Pose2D mapFromOdometry_;
   Pose2D targetsFrame_;   // mapFromOdometry_ when the core's targets were converted
   double targetsFrameStamp_ = 0.0;

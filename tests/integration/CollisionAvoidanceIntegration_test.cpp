@@ -3,8 +3,8 @@
 // and a PathPlanning module whose kernel has no map. Given targets down the main hallway are
 // driven to the end: the CAM reports them reached and the true pose is within 0.3 m of the last;
 // the same request sent again answers that drive and starts none; a drive to a goal waits for the
-// planner (no map yet) without failing and is cancelled to idle; no targets is refused naming
-// "targets".
+// planner (no map yet) without failing and is cancelled to idle, after which the module reads no
+// scans; no targets is refused naming "targets".
 #include <cppunit/extensions/HelperMacros.h>
 
 #include <cmath>
@@ -74,6 +74,13 @@ class CollisionAvoidanceIntegrationTest : public CppUnit::TestFixture {
     CPPUNIT_ASSERT(cam.driveStatus().phase == DrivePhase::Planning);
     cam.cancel();
     CPPUNIT_ASSERT(cam.driveStatus().phase == DrivePhase::Idle);
+
+    // Idle, it reads no scans (a lock-step simulator, as in the demo, is not paced by it): at most
+    // the one that applies the cancel while the simulator makes five more.
+    const std::uint64_t scansRead = cam.status().counters.at("scans");
+    const DataId scanNow = truth.latest().scan;
+    waitUntil([&] { return truth.latest().scan >= scanNow + 5; }, "five more scans");
+    CPPUNIT_ASSERT(cam.status().counters.at("scans") <= scansRead + 1);
 
     try {
       cam.followTargets({});
