@@ -11,18 +11,6 @@ namespace {
 
 constexpr Raises kPlanning = Raises::InvalidArgument | Raises::NotAvailable;
 
-// The goal as the planner takes it; an argument no goal of its kind can have is refused.
-PlanGoal checkedGoal(const RGNav::PlanGoal& goal) {
-  switch (goal.kind) {
-    case RGNav::GOAL_POINT: wire::requireFinite(goal.point, "goal.point"); break;
-    case RGNav::GOAL_REGION: wire::requireId(goal.region, "goal.region"); break;
-    case RGNav::GOAL_REGION_NAME:
-    case RGNav::GOAL_OBJECT: wire::checkedName(goal.name.in(), "goal.name", false); break;
-    default: wire::refuse("goal.kind", "unknown goal kind");
-  }
-  return fromIdl(goal);
-}
-
 // Runs planning work; the planner's typed failures become NoPath.
 template <class F>
 RGNav::PlanInfo* planned(F&& work) {
@@ -38,6 +26,18 @@ RGNav::PlanInfo* planned(F&& work) {
 }
 
 }  // namespace
+
+// The goal as the planner takes it; an argument no goal of its kind can have is refused.
+PlanGoal checkedGoal(const RGNav::PlanGoal& goal) {
+  switch (goal.kind) {
+    case RGNav::GOAL_POINT: wire::requireFinite(goal.point, "goal.point"); break;
+    case RGNav::GOAL_REGION: wire::requireId(goal.region, "goal.region"); break;
+    case RGNav::GOAL_REGION_NAME:
+    case RGNav::GOAL_OBJECT: wire::checkedName(goal.name.in(), "goal.name", false); break;
+    default: wire::refuse("goal.kind", "unknown goal kind");
+  }
+  return fromIdl(goal);
+}
 
 PathPlanningImpl::PathPlanningImpl(ServerRuntime& runtime, PathPlanningService& service)
     : ServiceServant(runtime), service_(service) {}

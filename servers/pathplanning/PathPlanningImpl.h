@@ -9,6 +9,10 @@
 
 namespace rgnav {
 
+// The goal as the planner takes it; InvalidArgument naming the field for an argument no goal of
+// its kind can have (also the Collision Avoidance's driveTo).
+PlanGoal checkedGoal(const RGNav::PlanGoal& goal);
+
 class PathPlanningImpl : public ServiceServant<POA_RGNav::PathPlanning> {
  public:
   PathPlanningImpl(ServerRuntime& runtime, PathPlanningService& service);

@@ -14,18 +14,6 @@ using nlohmann::json;
 constexpr const char* kFormat = "rgnav-plans";
 constexpr int kVersion = 1;
 
-json goalJson(const PlanGoal& g) {
-  return {{"kind", static_cast<int>(g.kind)}, {"point", jsonPoint(g.point)}, {"region", g.region}, {"name", g.name}};
-}
-
-PlanGoal goalFrom(const json& j) {
-  const int kind = integerFrom(j.at("kind"));
-  if (kind < 0 || kind > static_cast<int>(PlanGoal::Kind::Object))
-    throw FormatError("<checkpoint>", 0, "unknown goal kind " + std::to_string(kind));
-  return {static_cast<PlanGoal::Kind>(kind), pointFrom(j.at("point")), integerFrom(j.at("region")),
-          j.at("name").get<std::string>()};
-}
-
 json nodeJson(const GraphNodeView& n) {
   return {{"gateway", n.gateway}, {"side", n.side}, {"region", n.region}, {"position", jsonPoint(n.position)}};
 }
@@ -41,7 +29,7 @@ json planJson(const PlanRecord& r) {
   return {{"id", r.id},
           {"request", r.request},
           {"start", jsonPose(r.start)},
-          {"goal", goalJson(r.goal)},
+          {"goal", planGoalJson(r.goal)},
           {"targets", targets},
           {"route", route},
           {"path", jsonPoints(r.plan.path)},
@@ -56,7 +44,7 @@ PlanRecord planFrom(const json& j) {
   r.id = integerFrom(j.at("id"));
   r.request = integerFrom(j.at("request"));
   r.start = poseFrom(j.at("start"));
-  r.goal = goalFrom(j.at("goal"));
+  r.goal = planGoalFrom(j.at("goal"));
   for (const json& t : j.at("targets")) r.plan.targets.push_back({poseFrom(t.at("pose")), integerFrom(t.at("region"))});
   for (const json& n : j.at("route")) r.plan.route.push_back(nodeFrom(n));
   r.plan.path = pointsFrom(j.at("path"));
@@ -68,6 +56,18 @@ PlanRecord planFrom(const json& j) {
 }
 
 }  // namespace
+
+json planGoalJson(const PlanGoal& g) {
+  return {{"kind", static_cast<int>(g.kind)}, {"point", jsonPoint(g.point)}, {"region", g.region}, {"name", g.name}};
+}
+
+PlanGoal planGoalFrom(const json& j) {
+  const int kind = integerFrom(j.at("kind"));
+  if (kind < 0 || kind > static_cast<int>(PlanGoal::Kind::Object))
+    throw FormatError("<checkpoint>", 0, "unknown goal kind " + std::to_string(kind));
+  return {static_cast<PlanGoal::Kind>(kind), pointFrom(j.at("point")), integerFrom(j.at("region")),
+          j.at("name").get<std::string>()};
+}
 
 PlanStore::PlanStore(std::size_t kept) : kept_(std::max<std::size_t>(kept, 1)) {}
 

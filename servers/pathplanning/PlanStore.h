@@ -11,12 +11,18 @@
 
 #include <cstddef>
 #include <deque>
+#include <nlohmann/json_fwd.hpp>
 #include <optional>
 #include <string>
 
 #include "core/nav/planning/PlanRecord.h"
 
 namespace rgnav {
+
+// A plan's goal in the checkpoint's form (also the Collision Avoidance's drive checkpoint);
+// planGoalFrom throws FormatError for an unknown kind (and the JSON errors readingJson reports).
+nlohmann::json planGoalJson(const PlanGoal& goal);
+PlanGoal planGoalFrom(const nlohmann::json& j);
 
 class PlanStore {
  public:

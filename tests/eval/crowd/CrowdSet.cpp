@@ -1,0 +1,55 @@
+// The crowd evaluation's server set (see CrowdSet.h).
+#include "tests/eval/crowd/CrowdSet.h"
+
+#include <cstdio>
+#include <filesystem>
+
+#include "tests/eval/crowd/OfficeRgMap.h"
+
+namespace rgnav {
+
+using testing::ClusterModule;
+using testing::TestCluster;
+
+namespace {
+
+std::string poseArgument(const Pose2D& p) {
+  char text[96];
+  std::snprintf(text, sizeof text, "%.3f,%.3f,%.4f", p.x, p.y, p.theta);
+  return text;
+}
+
+std::vector<std::string> simulatorCommand(const CrowdSetOptions& o) {
+  return {TestCluster::program("rgnav-sim"), "--world", std::filesystem::absolute(o.world).string(), "--config",
+          std::filesystem::absolute(o.simConfig).string(), "--clock", "realtime",
+          "--start", poseArgument(o.start), "--people", std::to_string(o.people), "--seed", std::to_string(o.seed)};
+}
+
+}  // namespace
+
+CrowdSet::CrowdSet(const CrowdSetOptions& o, const RgMapState* map)
+    : cluster_(std::make_unique<TestCluster>(std::vector<ClusterModule>{
+          {"Simulator", simulatorCommand(o), {"Laser", "Base", "GroundTruth"}},
+          {"LowLevelDrive",
+           {TestCluster::program("rgnav-lowleveldrive"), "--config", TestCluster::moduleConfig("lowleveldrive")},
+           {"LowLevelDrive"},
+           {"Simulator"}},
+          {"RGMappingKernel",
+           {TestCluster::program("rgnav-rgmappingkernel"), "--config", TestCluster::moduleConfig("rgmappingkernel")},
+           {"RGMappingKernel"}},
+          {"PathPlanning",
+           {TestCluster::program("rgnav-pathplanning"), "--config", TestCluster::moduleConfig("pathplanning")},
+           {"PathPlanning"},
+           {"RGMappingKernel"}},
+          {"CollisionAvoidance",
+           {TestCluster::program("rgnav-collisionavoidance"), "--config",
+            TestCluster::moduleConfig("collisionavoidance"), "--pose-source", "groundtruth", "--trace"},
+           {"CollisionAvoidance"},
+           {"Simulator", "LowLevelDrive", "PathPlanning"}}},
+          o.setYaml)) {
+  if (map) writeKernelCheckpoint(*map, cluster_->dir() + "/run/state/RGMappingKernel");
+}
+
+void CrowdSet::start() { cluster_->start(); }
+
+}  // namespace rgnav
