@@ -13,6 +13,7 @@
 #include "core/config/DescribedConfig.h"
 #include "core/gateways/classify/HmmModelFile.h"
 #include "core/gateways/detection/GatewayDetectorConfigYaml.h"
+#include "core/nav/avoidance/CollisionAvoidanceConfigYaml.h"
 #include "core/nav/motion/LowLevelDriveConfigYaml.h"
 #include "core/nav/planning/RoutePlannerConfigYaml.h"
 #include "core/rgmap/kernel/RgMappingKernelConfigYaml.h"
@@ -48,7 +49,8 @@ const std::map<std::string, ModuleFile>& moduleFiles() {
       {"gatewaydetection", moduleFile(&parseGatewayDetectorConfig)},
       {"rgmappingkernel", moduleFile(&parseRgMappingKernelConfig)},
       {"pathplanning", moduleFile(&parseRoutePlannerConfig)},
-      {"lowleveldrive", moduleFile(&parseLowLevelDriveConfig)}};
+      {"lowleveldrive", moduleFile(&parseLowLevelDriveConfig)},
+      {"collisionavoidance", moduleFile(&parseCollisionAvoidanceConfig)}};
   return files;
 }
 

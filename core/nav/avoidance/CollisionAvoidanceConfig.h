@@ -6,6 +6,7 @@
 // robot's, not the module's, and come with the robot's configuration.
 #pragma once
 
+#include <cmath>
 #include <cstddef>
 
 #include "core/nav/avoidance/LaserObstacleMap.h"
@@ -20,10 +21,10 @@ struct CandidateConfig {
   double turnMaxSharpnessPerM2 = 40.0;
   double lateralStepM = 0.2;         // deviations: the first targets shifted sideways by k * step
   std::size_t lateralCount = 4;      // ... for k = 1..count on either side
-  double fanMaxDeflectionRad = 1.2;  // fan: turn by up to +-this, then straight on
+  double fanMaxDeflectionRad = 70.0 * M_PI / 180.0;  // fan: turn by up to +-this, then straight on
   std::size_t fanCount = 9;          // ... this many chains (odd: straight ahead is one)
   double fanLengthM = 1.5;           // length of each fan chain
-  double pivotStepRad = 0.785;       // standing: turns on the spot by k * step, k = 1..count
+  double pivotStepRad = M_PI / 4.0;      // standing: turns on the spot by k * step, k = 1..count
   std::size_t pivotCount = 4;        // ... either way (0: no turns on the spot)
 };
 
