@@ -29,13 +29,13 @@ struct Rect {
 };
 
 // 24 x 12 m, walls everywhere but the free rectangles: the hallway (y 6..8), the cross hallway
-// (x 13..15, south from it), a room (y 2..5.9) with a 0.8 m door at x 9.6..10.4 through the
-// 0.1 m wall between it and the hallway, and one west of the cross hallway (x 12.3..12.85) with
+// (x 13..15, south from it), a room (y 3.5..5.9) with a 0.8 m door at x 9.6..10.4 through the
+// 0.1 m wall between it and the hallway, and one west of the cross hallway (x 11.15..12.85) with
 // a 0.9 m door at y 2.55..3.45 through a 0.15 m wall.
 OccupancyGrid office() {
   OccupancyGrid grid(480, 240, 0.05, {0.0, 0.0}, Cell::Occupied);
-  const std::vector<Rect> free{{1.0, 6.0, 22.0, 8.0},   {13.0, 1.0, 15.0, 8.0},  {7.0, 2.0, 12.0, 5.9},
-                               {9.6, 5.9, 10.4, 6.0},   {12.2, 0.5, 12.85, 4.5}, {12.85, 2.55, 13.0, 3.45}};
+  const std::vector<Rect> free{{1.0, 6.0, 22.0, 8.0},   {13.0, 1.0, 15.0, 8.0},  {7.0, 3.5, 11.0, 5.9},
+                               {9.6, 5.9, 10.4, 6.0},   {11.15, 0.5, 12.85, 5.9}, {12.85, 2.55, 13.0, 3.45}};
   for (const Rect& r : free)
     for (double x = r.x0 + 0.025; x < r.x1; x += 0.05)
       for (double y = r.y0 + 0.025; y < r.y1; y += 0.05) grid.set(*grid.cellOf({x, y}), Cell::Free);
@@ -136,7 +136,7 @@ class CollisionAvoidanceDriveTest : public CppUnit::TestFixture {
 
   void passesTheDoor() {
     // East along the hallway, then south through the door into the room.
-    const std::vector<Pose2D> targets = targetsAlong({{5.0, 7.0}, {10.0, 7.0}, {10.0, 6.4}, {10.0, 3.0}}, 0.6);
+    const std::vector<Pose2D> targets = targetsAlong({{5.0, 7.0}, {10.0, 7.0}, {10.0, 6.4}, {10.0, 4.0}}, 0.6);
     const DriveOutcome out = driveAlong(world_, {5.0, 7.0, 0.0}, targets, 60.0);
     std::printf("\ndoor: reached=%d collisions=%llu t=%.1f s\n", out.reached,
                 static_cast<unsigned long long>(out.collisions), out.seconds);
@@ -148,7 +148,7 @@ class CollisionAvoidanceDriveTest : public CppUnit::TestFixture {
     // East along the hallway, south down the cross hallway close to its west wall, west through
     // the door beside it.
     const std::vector<Pose2D> targets =
-        targetsAlong({{8.0, 7.0}, {13.5, 6.6}, {13.5, 3.0}, {12.6, 3.0}, {12.5, 1.5}}, 1.0);
+        targetsAlong({{8.0, 7.0}, {13.4, 6.6}, {13.4, 3.0}, {12.2, 3.0}, {11.6, 1.5}}, 1.0);
     const DriveOutcome out = driveAlong(world_, {8.0, 7.0, 0.0}, targets, 60.0);
     std::printf("\nside door: reached=%d collisions=%llu t=%.1f s\n", out.reached,
                 static_cast<unsigned long long>(out.collisions), out.seconds);
