@@ -121,6 +121,7 @@ class CollisionAvoidanceDriveTest : public CppUnit::TestFixture {
   CPPUNIT_TEST(turnsIntoTheCrossHallway);
   CPPUNIT_TEST(passesTheDoor);
   CPPUNIT_TEST(turnsIntoADoorFromTheCrossHallway);
+  CPPUNIT_TEST(leavesTheRoomBehindItThroughTheDoor);
   CPPUNIT_TEST_SUITE_END();
 
  public:
@@ -151,6 +152,16 @@ class CollisionAvoidanceDriveTest : public CppUnit::TestFixture {
         targetsAlong({{8.0, 7.0}, {13.4, 6.6}, {13.4, 3.0}, {12.2, 3.0}, {11.6, 1.5}}, 1.0);
     const DriveOutcome out = driveAlong(world_, {8.0, 7.0, 0.0}, targets, 60.0);
     std::printf("\nside door: reached=%d collisions=%llu t=%.1f s\n", out.reached,
+                static_cast<unsigned long long>(out.collisions), out.seconds);
+    CPPUNIT_ASSERT(out.reached);
+    CPPUNIT_ASSERT_EQUAL(std::uint64_t{0}, out.collisions);
+  }
+
+  void leavesTheRoomBehindItThroughTheDoor() {
+    // Standing in the room facing away from the door, the first targets behind it.
+    const std::vector<Pose2D> targets = targetsAlong({{11.9, 1.9}, {12.2, 3.0}, {13.4, 3.0}, {13.4, 6.0}}, 0.6);
+    const DriveOutcome out = driveAlong(world_, {11.9, 1.9, -2.0}, targets, 40.0);
+    std::printf("\nleave room: reached=%d collisions=%llu t=%.1f s\n", out.reached,
                 static_cast<unsigned long long>(out.collisions), out.seconds);
     CPPUNIT_ASSERT(out.reached);
     CPPUNIT_ASSERT_EQUAL(std::uint64_t{0}, out.collisions);
