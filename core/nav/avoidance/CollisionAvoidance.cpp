@@ -35,6 +35,8 @@ constexpr double kRefreshPeriodS = 0.5;
 // more than the margin around it (the robot stops within a few centimetres of the chain's end).
 constexpr double kTurnableStepM = 0.05;
 constexpr double kTurnSlackM = 0.05;
+// A chain's end off the targets' polyline counts this many times its distance to it.
+constexpr double kOffPathWeight = 2.0;
 // What cutting a chain short costs: a chain that reaches its end beats one that stops early.
 constexpr double kCutPenaltyS = 2.0;
 
@@ -133,11 +135,24 @@ void CollisionAvoidance::dropPassedTargets(const Pose2D& from) {
 }
 
 double CollisionAvoidance::pathLeftFrom(const Pose2D& end) const {
+  // The nearest point of the targets' polyline, off it at kOffPathWeight (a straight line to a
+  // later target would cut through the walls the path goes around), then along it to the goal.
   double best = std::numeric_limits<double>::infinity();
   double after = 0.0;  // path length from target j to the goal
   for (std::size_t j = targets_.size(); j-- > 0;) {
-    if (j + 1 < targets_.size()) after += distance(targets_[j], targets_[j + 1]);
-    best = std::min(best, distance(end, targets_[j]) + after);
+    const Pose2D& a = targets_[j];
+    double off = distance(end, a), along = after;
+    if (j + 1 < targets_.size()) {
+      const Pose2D& b = targets_[j + 1];
+      const double length = distance(a, b);
+      const double u = length > 0.0
+                           ? std::clamp(((end.x - a.x) * (b.x - a.x) + (end.y - a.y) * (b.y - a.y)) / (length * length), 0.0, 1.0)
+                           : 0.0;
+      off = std::hypot(a.x + u * (b.x - a.x) - end.x, a.y + u * (b.y - a.y) - end.y);
+      along = after + (1.0 - u) * length;
+      after += length;
+    }
+    best = std::min(best, kOffPathWeight * off + along);
   }
   return best;
 }
