@@ -114,6 +114,14 @@ DriveOutcome driveAlong(const OccupancyGrid& world, const Pose2D& start, const s
   return outcome;
 }
 
+// Prints the drive's outcome under `name` and asserts it reached the goal without a collision.
+void expectReachedWithoutCollision(const char* name, const DriveOutcome& out) {
+  std::printf("\n%s: reached=%d collisions=%llu t=%.1f s\n", name, out.reached,
+              static_cast<unsigned long long>(out.collisions), out.seconds);
+  CPPUNIT_ASSERT_MESSAGE(name, out.reached);
+  CPPUNIT_ASSERT_EQUAL_MESSAGE(name, std::uint64_t{0}, out.collisions);
+}
+
 }  // namespace
 
 class CollisionAvoidanceDriveTest : public CppUnit::TestFixture {
@@ -129,20 +137,14 @@ class CollisionAvoidanceDriveTest : public CppUnit::TestFixture {
     // East along the hallway 0.4 m from its south wall, then south into the cross hallway.
     const std::vector<Pose2D> targets = targetsAlong({{2.0, 6.4}, {13.4, 6.4}, {13.4, 2.0}}, 1.0);
     const DriveOutcome out = driveAlong(world_, {2.0, 6.4, 0.0}, targets, 60.0);
-    std::printf("\ncorner: reached=%d collisions=%llu t=%.1f s\n", out.reached,
-                static_cast<unsigned long long>(out.collisions), out.seconds);
-    CPPUNIT_ASSERT(out.reached);
-    CPPUNIT_ASSERT_EQUAL(std::uint64_t{0}, out.collisions);
+    expectReachedWithoutCollision("corner", out);
   }
 
   void passesTheDoor() {
     // East along the hallway, then south through the door into the room.
     const std::vector<Pose2D> targets = targetsAlong({{5.0, 7.0}, {10.0, 7.0}, {10.0, 6.4}, {10.0, 4.0}}, 0.6);
     const DriveOutcome out = driveAlong(world_, {5.0, 7.0, 0.0}, targets, 60.0);
-    std::printf("\ndoor: reached=%d collisions=%llu t=%.1f s\n", out.reached,
-                static_cast<unsigned long long>(out.collisions), out.seconds);
-    CPPUNIT_ASSERT(out.reached);
-    CPPUNIT_ASSERT_EQUAL(std::uint64_t{0}, out.collisions);
+    expectReachedWithoutCollision("door", out);
   }
 
   void turnsIntoADoorFromTheCrossHallway() {
@@ -151,20 +153,14 @@ class CollisionAvoidanceDriveTest : public CppUnit::TestFixture {
     const std::vector<Pose2D> targets =
         targetsAlong({{8.0, 7.0}, {13.4, 6.6}, {13.4, 3.0}, {12.2, 3.0}, {11.6, 1.5}}, 1.0);
     const DriveOutcome out = driveAlong(world_, {8.0, 7.0, 0.0}, targets, 60.0);
-    std::printf("\nside door: reached=%d collisions=%llu t=%.1f s\n", out.reached,
-                static_cast<unsigned long long>(out.collisions), out.seconds);
-    CPPUNIT_ASSERT(out.reached);
-    CPPUNIT_ASSERT_EQUAL(std::uint64_t{0}, out.collisions);
+    expectReachedWithoutCollision("side door", out);
   }
 
   void leavesTheRoomBehindItThroughTheDoor() {
     // Standing in the room facing away from the door, the first targets behind it.
     const std::vector<Pose2D> targets = targetsAlong({{11.9, 1.9}, {12.2, 3.0}, {13.4, 3.0}, {13.4, 6.0}}, 0.6);
     const DriveOutcome out = driveAlong(world_, {11.9, 1.9, -2.0}, targets, 40.0);
-    std::printf("\nleave room: reached=%d collisions=%llu t=%.1f s\n", out.reached,
-                static_cast<unsigned long long>(out.collisions), out.seconds);
-    CPPUNIT_ASSERT(out.reached);
-    CPPUNIT_ASSERT_EQUAL(std::uint64_t{0}, out.collisions);
+    expectReachedWithoutCollision("leave room", out);
   }
 
  private:
