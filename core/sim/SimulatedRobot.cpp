@@ -27,6 +27,8 @@ void SimulatedRobot::stepLocked() {
     simulation_.command(lapsed ? VelocityCommand{} : commanded_);
   }
   const SimulationStep step = simulation_.step();
+  if (step.collided && !colliding_ && options_.collisionLog) logCollision(step);
+  colliding_ = step.collided;
   odometry_.push(step.odometry);
   if (recorder_) recorder_->write(step.odometry);
   if (step.scan) {
@@ -37,6 +39,14 @@ void SimulatedRobot::stepLocked() {
     scans_.markEndOfData();
     odometry_.markEndOfData();
   }
+}
+
+void SimulatedRobot::logCollision(const SimulationStep& step) const {
+  const Pose2D& p = step.truePose;
+  *options_.collisionLog << "collision at t=" << step.odometry.stamp << " s: robot at (" << p.x << ", " << p.y << ", "
+                         << p.theta << ") v=" << step.odometry.translationalVelocity << " m/s w=" << step.odometry.rotationalVelocity
+                         << " rad/s, " << (step.droveInto ? "drove into a wall or person" : "a person walked into it while it moved")
+                         << std::endl;
 }
 
 void SimulatedRobot::step() {

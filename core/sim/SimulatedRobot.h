@@ -26,6 +26,7 @@ struct SimulatedRobotOptions {
   SimClock clock = SimClock::RealTime;
   std::size_t bufferCapacity = 20000;
   double commandTimeoutSeconds = 0.5;  // simulated seconds a velocity command holds
+  std::ostream* collisionLog = nullptr;  // a line per collision (its first step), if set
 };
 
 class SimulatedRobot : public LaserStream, public BaseStream {
@@ -65,6 +66,7 @@ class SimulatedRobot : public LaserStream, public BaseStream {
 
  private:
   void stepLocked();
+  void logCollision(const SimulationStep& step) const;
   void advanceToNextScan();  // lock-step
 
   mutable std::mutex mutex_;
@@ -77,6 +79,7 @@ class SimulatedRobot : public LaserStream, public BaseStream {
   DataBuffer<OdometryReading> odometry_;
   VelocityCommand commanded_;
   Timestamp commandedAt_ = 0.0;
+  bool colliding_ = false;  // the last step collided
 };
 
 }  // namespace rgnav

@@ -72,6 +72,7 @@ SimulationStep Simulation::step() {
   SimulationStep out;
   out.truePose = robot_.pose();
   out.collided = collided;
+  out.droveInto = drove;
   out.bumped = !moving && walkedInto > 0;
   out.odometry = OdometryReading{nextOdometryId_++, time_, odometryPose_, robot_.velocity().translational,
                                  robot_.velocity().rotational};

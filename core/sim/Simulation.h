@@ -55,6 +55,7 @@ struct SimulationStep {
   std::optional<LaserScan> scan;  // on scan steps
   Pose2D truePose;
   bool collided = false;  // the robot drove into a wall or a person in this step
+  bool droveInto = false; // ... by its own motion (else a person walked into it while it moved)
   bool bumped = false;    // a person walked into the robot standing still in this step
 };
 

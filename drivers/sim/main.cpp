@@ -6,7 +6,7 @@
 // consumers allow, deterministic for a seed). --record writes the run as a CARMEN log. --people N
 // lets N people walk through the world (moving obstacles); the module's health counts
 // robot_collisions (the robot drove into a wall or person) and person_bumps (a person walked into
-// the robot standing still).
+// the robot standing still); each collision is also a line on stderr (time, true pose, velocity).
 #include <atomic>
 #include <fstream>
 #include <iostream>
@@ -84,6 +84,7 @@ int main(int argc, char** argv) {
     SimulatedRobotOptions robotOptions;
     robotOptions.clock = parseClock(clock);
     robotOptions.bufferCapacity = buffer;
+    robotOptions.collisionLog = &std::cerr;
     auto robot = std::make_shared<SimulatedRobot>(std::move(loaded), simulation, startPose, std::move(route),
                                                   record.empty() ? nullptr : &recording, robotOptions);
     runtime.activate(laserObject, new LaserImpl(runtime, robot, maxBatch));

@@ -134,23 +134,30 @@ void CollisionAvoidance::dropPassedTargets(const Pose2D& from) {
   targets_.erase(targets_.begin(), targets_.begin() + static_cast<std::ptrdiff_t>(passed));
 }
 
-double CollisionAvoidance::pathLeftFrom(const Pose2D& end) const {
-  // The nearest point of the targets' polyline, off it at kOffPathWeight (a straight line to a
-  // later target would cut through the walls the path goes around), then along it to the goal.
+double CollisionAvoidance::pathLeftFrom(const TrajectoryChain& chain) const {
+  // The nearest point of the targets' polyline to the chain's end, off it at kOffPathWeight (a
+  // straight line to a later target would cut through the walls the path goes around), then along
+  // it to the goal. Only the part of the polyline the chain can have reached counts: the segments
+  // that begin within the chain's length along the path from its start (it cannot get farther); a
+  // nearer point farther along lies behind a wall the path goes around (the hallway beyond a
+  // room's door, seen through the room's wall).
+  const std::size_t n = targets_.size();
+  std::vector<double> toGoal(n, 0.0);  // path length from target j to the goal
+  for (std::size_t j = n - 1; j-- > 0;) toGoal[j] = toGoal[j + 1] + distance(targets_[j], targets_[j + 1]);
+  const Pose2D end = chain.end();
+  const double reach = chain.length() - distance(chain.start(), targets_.front());
   double best = std::numeric_limits<double>::infinity();
-  double after = 0.0;  // path length from target j to the goal
-  for (std::size_t j = targets_.size(); j-- > 0;) {
+  for (std::size_t j = 0; j < n && (j == 0 || toGoal[0] - toGoal[j] <= reach); ++j) {
     const Pose2D& a = targets_[j];
-    double off = distance(end, a), along = after;
-    if (j + 1 < targets_.size()) {
+    double off = distance(end, a), along = toGoal[j];
+    if (j + 1 < n) {
       const Pose2D& b = targets_[j + 1];
       const double length = distance(a, b);
       const double u = length > 0.0
                            ? std::clamp(((end.x - a.x) * (b.x - a.x) + (end.y - a.y) * (b.y - a.y)) / (length * length), 0.0, 1.0)
                            : 0.0;
       off = std::hypot(a.x + u * (b.x - a.x) - end.x, a.y + u * (b.y - a.y) - end.y);
-      along = after + (1.0 - u) * length;
-      after += length;
+      along = toGoal[j + 1] + (1.0 - u) * length;
     }
     best = std::min(best, kOffPathWeight * off + along);
   }
@@ -206,7 +213,7 @@ std::optional<CollisionAvoidance::Scored> CollisionAvoidance::bestCandidate(cons
     } catch (const InvalidArgumentError&) {
       continue;  // cannot stop within it from the start speed
     }
-    cost += timed->duration() + config_.progressWeightSPerM * pathLeftFrom(candidate.chain.end()) +
+    cost += timed->duration() + config_.progressWeightSPerM * pathLeftFrom(candidate.chain) +
             config_.clearanceWeightSPerM *
                 std::max(0.0, config_.safetyMarginM + config_.comfortClearanceM - check.minClearance);
     if (!best || cost < best->cost) best = Scored{std::move(candidate), std::move(*timed), cost};

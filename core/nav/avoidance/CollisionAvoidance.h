@@ -91,7 +91,7 @@ class CollisionAvoidance {
   SweptCheckOptions checkOptions() const;
   bool currentStillFree(const RobotState& state, const ObstacleClearance& clearance) const;
   void dropPassedTargets(const Pose2D& from);
-  double pathLeftFrom(const Pose2D& end) const;
+  double pathLeftFrom(const TrajectoryChain& chain) const;
   std::vector<Candidate> candidatesFrom(const PlanStart& start) const;
   std::optional<Scored> bestCandidate(const PlanStart& start, const ObstacleClearance& clearance) const;
   // The largest arc length up to `end` (in steps) where the robot could turn on the spot, or 0.

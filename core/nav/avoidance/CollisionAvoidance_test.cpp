@@ -1,7 +1,8 @@
 // Tests the Collision Avoidance's decisions with a robot that follows its chains exactly: it
 // drives the targets in free space, stops (or brakes short) when an obstacle appears on the chain
 // it drives, goes around a box on its path, and reports blocked once walled in for
-// blocked_wait_s.
+// blocked_wait_s, and leaves a room by its door when the path's later part (the hallway) lies
+// just behind the wall it faces.
 #include <cppunit/extensions/HelperMacros.h>
 
 #include <cmath>
@@ -48,6 +49,29 @@ class PerfectRobot {
     timed_.emplace(chain.chain, limits_, chain.startSpeed, 0.0);
   }
 
+  void leavesARoomByItsDoorNotTowardsTheHallwayBehindItsWall() {
+    // A room (x -3..2, y -1..3) with its door in the east wall (y 0.5..1.5) onto a corridor (x 2..4)
+    // that turns west into a hallway (y -3..-1) behind the room's south wall. The robot stands in
+    // the room facing west; the path goes east through the door, south, then west along the hallway.
+    const ObstacleGrid rooms = gridWith({{-5.0, -1.1, 4.1, -1.0},   // the room's south wall
+                                         {-5.0, -3.1, 4.1, -3.0},   // the hallway's south wall
+                                         {2.0, -1.0, 2.1, 0.5},     // the east wall, the door,
+                                         {2.0, 1.5, 2.1, 3.1},
+                                         {-3.1, -1.0, -3.0, 3.1},   // west and north walls
+                                         {-3.0, 3.0, 2.0, 3.1},
+                                         {4.0, -3.0, 4.1, 3.1}},    // the corridor's east wall
+                                        0.0);
+    std::vector<Pose2D> targets{{1.0, 1.0, 0.0}, {2.0, 1.0, 0.0}, {3.0, 1.0, -M_PI / 2}, {3.0, 0.0, -M_PI / 2},
+                                {3.0, -1.0, -M_PI / 2}};
+    for (double x = 3.0; x >= -4.0 - 1e-9; x -= 1.0) targets.push_back({x, -2.0, M_PI});
+    CollisionAvoidance cam({}, kJackal, limits_);
+    cam.setTargets(targets);
+    const AvoidanceDecision d = cam.update({0.0, {0.0, 0.0, M_PI}, 0.0, 0.0}, std::span(&rooms, 1));
+    CPPUNIT_ASSERT(d.action == AvoidanceAction::Drive);
+    CPPUNIT_ASSERT(d.chain);
+    CPPUNIT_ASSERT(d.chain->chain.end().x > 1.0);  // towards the door, not west
+  }
+
  private:
   MotionLimits limits_;
   Pose2D standing_;
@@ -63,6 +87,7 @@ class CollisionAvoidanceTest : public CppUnit::TestFixture {
   CPPUNIT_TEST(stopsForAnObstacleAppearingOnItsChain);
   CPPUNIT_TEST(goesAroundABox);
   CPPUNIT_TEST(reportsBlockedWhenWalledIn);
+  CPPUNIT_TEST(leavesARoomByItsDoorNotTowardsTheHallwayBehindItsWall);
   CPPUNIT_TEST_SUITE_END();
 
  public:
@@ -135,6 +160,29 @@ class CollisionAvoidanceTest : public CppUnit::TestFixture {
       if (last == AvoidanceAction::Blocked) blockedAt = 0.1 * i;
     }
     CPPUNIT_ASSERT_DOUBLES_EQUAL(2.0, blockedAt, 1e-6);
+  }
+
+  void leavesARoomByItsDoorNotTowardsTheHallwayBehindItsWall() {
+    // A room (x -3..2, y -1..3) with its door in the east wall (y 0.5..1.5) onto a corridor (x 2..4)
+    // that turns west into a hallway (y -3..-1) behind the room's south wall. The robot stands in
+    // the room facing west; the path goes east through the door, south, then west along the hallway.
+    const ObstacleGrid rooms = gridWith({{-5.0, -1.1, 4.1, -1.0},   // the room's south wall
+                                         {-5.0, -3.1, 4.1, -3.0},   // the hallway's south wall
+                                         {2.0, -1.0, 2.1, 0.5},     // the east wall, the door,
+                                         {2.0, 1.5, 2.1, 3.1},
+                                         {-3.1, -1.0, -3.0, 3.1},   // west and north walls
+                                         {-3.0, 3.0, 2.0, 3.1},
+                                         {4.0, -3.0, 4.1, 3.1}},    // the corridor's east wall
+                                        0.0);
+    std::vector<Pose2D> targets{{1.0, 1.0, 0.0}, {2.0, 1.0, 0.0}, {3.0, 1.0, -M_PI / 2}, {3.0, 0.0, -M_PI / 2},
+                                {3.0, -1.0, -M_PI / 2}};
+    for (double x = 3.0; x >= -4.0 - 1e-9; x -= 1.0) targets.push_back({x, -2.0, M_PI});
+    CollisionAvoidance cam({}, kJackal, limits_);
+    cam.setTargets(targets);
+    const AvoidanceDecision d = cam.update({0.0, {0.0, 0.0, M_PI}, 0.0, 0.0}, std::span(&rooms, 1));
+    CPPUNIT_ASSERT(d.action == AvoidanceAction::Drive);
+    CPPUNIT_ASSERT(d.chain);
+    CPPUNIT_ASSERT(d.chain->chain.end().x > 1.0);  // towards the door, not west
   }
 
  private:
