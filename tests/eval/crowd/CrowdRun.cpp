@@ -18,6 +18,7 @@ namespace {
 
 constexpr auto kPollPeriod = std::chrono::milliseconds(100);
 constexpr auto kReportPeriod = std::chrono::seconds(10);  // verbose: a progress line this often
+constexpr double kPathStepM = 0.05;  // a path point whenever the robot moved this far
 
 double seconds(Clock::duration d) { return std::chrono::duration<double>(d).count(); }
 
@@ -54,6 +55,8 @@ GoalOutcome driveOne(CollisionAvoidanceClient& cam, TruePoseProbe& probe, const 
     const TrueSample here = probe.latest();
     if (previous) outcome.distanceM += std::hypot(here.pose.x - previous->x, here.pose.y - previous->y);
     previous = here.pose;
+    const Eigen::Vector2d position(here.pose.x, here.pose.y);
+    if (outcome.path.empty() || (position - outcome.path.back()).norm() > kPathStepM) outcome.path.push_back(position);
     outcome.finalErrorM = std::hypot(here.pose.x - goal.x(), here.pose.y - goal.y());
     std::optional<DriveProgress> status = request == 0 ? std::nullopt : statusOf(cam);
     if (request == 0 || (status && status->request != request)) {
@@ -80,6 +83,10 @@ GoalOutcome driveOne(CollisionAvoidanceClient& cam, TruePoseProbe& probe, const 
       outcome.reached = true;
       break;
     }
+  }
+  if (previous) {
+    const Eigen::Vector2d end(previous->x, previous->y);
+    if (outcome.path.back() != end) outcome.path.push_back(end);
   }
   outcome.seconds = seconds(Clock::now() - begin);
   return outcome;

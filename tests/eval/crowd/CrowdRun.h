@@ -4,7 +4,8 @@
 // not reached when the CAM gives up (failed) or the goal takes longer than `goalTimeoutS`. The CAM
 // may be restarted meanwhile (the motion fault test kills it): a status call that fails is asked
 // again, and a CAM that answers with another request (it lost the drive) gets the same driveTo
-// request again, which it deduplicates. Distances and speeds come from the true poses.
+// request again, which it deduplicates. Distances and speeds come from the true poses, and so does
+// each goal's driven path (a point whenever the robot moved more than 5 cm, and where it ended).
 #pragma once
 
 #include <Eigen/Core>
@@ -30,6 +31,7 @@ struct GoalOutcome {
   double finalErrorM = 0.0;
   unsigned replans = 0;
   std::string reason;      // the CAM's last reason (why it failed or waits)
+  std::vector<Eigen::Vector2d> path;  // true positions from the start to the end of the drive
 };
 
 struct CrowdOutcome {
