@@ -45,8 +45,7 @@ void SimulatedRobot::logCollision(const SimulationStep& step) const {
   const Pose2D& p = step.truePose;
   *options_.collisionLog << "collision at t=" << step.odometry.stamp << " s: robot at (" << p.x << ", " << p.y << ", "
                          << p.theta << ") v=" << step.odometry.translationalVelocity << " m/s w=" << step.odometry.rotationalVelocity
-                         << " rad/s, " << (step.droveInto ? "drove into a wall or person" : "a person walked into it while it moved")
-                         << std::endl;
+                         << " rad/s" << std::endl;
 }
 
 void SimulatedRobot::step() {

@@ -5,6 +5,7 @@
 #include <string>
 
 #include "core/common/Errors.h"
+#include "core/sim/people/ContactBlame.h"
 
 namespace rgnav {
 
@@ -57,14 +58,19 @@ SimulationStep Simulation::step() {
   const Pose2D before = robot_.pose();
   const bool drove = robot_.step(config_.stepSeconds, world_, peopleObstacles()) == StepOutcome::Collided;
   // People walk on with the robot at its new pose; whoever would touch it stops short.
-  const int walkedInto = crowd_ ? crowd_->step(config_.stepSeconds, config_.robot.footprint, robot_.pose()) : 0;
-  const bool moving = drove || std::abs(robot_.velocity().translational) > kStillSpeed ||
-                      std::abs(robot_.velocity().rotational) > kStillRotation;
-  // One collision per step however many things the robot met (driving into a person and that
-  // person stepping on into it are one encounter); each person walking into it standing is a bump.
-  const bool collided = drove || (moving && walkedInto > 0);
+  // Each person who came into contact: the robot drove into it if its outline moved towards it
+  // (ContactBlame.h), else the person walked into the robot (a bump).
+  int droveIntoPeople = 0, walkedInto = 0;
+  if (crowd_)
+    for (const WorldPoint& person : crowd_->step(config_.stepSeconds, config_.robot.footprint, robot_.pose()))
+      ++(robotDroveInto(config_.robot.footprint, robot_.pose(), robot_.velocity().translational,
+                        robot_.velocity().rotational, person)
+             ? droveIntoPeople
+             : walkedInto);
+  // One collision per step however many things the robot met.
+  const bool collided = drove || droveIntoPeople > 0;
   robotCollisions_ += collided;
-  personBumps_ += moving ? 0 : static_cast<std::uint64_t>(walkedInto);
+  personBumps_ += static_cast<std::uint64_t>(walkedInto);
   odometryPose_ = odometryNoise_.advance(odometryPose_, before, robot_.pose());
   time_ += config_.stepSeconds;
   ++steps_;
@@ -72,8 +78,7 @@ SimulationStep Simulation::step() {
   SimulationStep out;
   out.truePose = robot_.pose();
   out.collided = collided;
-  out.droveInto = drove;
-  out.bumped = !moving && walkedInto > 0;
+  out.bumped = walkedInto > 0;
   out.odometry = OdometryReading{nextOdometryId_++, time_, odometryPose_, robot_.velocity().translational,
                                  robot_.velocity().rotational};
   if (steps_ % static_cast<std::uint64_t>(config_.stepsPerScan) == 0) {

@@ -55,17 +55,11 @@ struct SimulationStep {
   std::optional<LaserScan> scan;  // on scan steps
   Pose2D truePose;
   bool collided = false;  // the robot drove into a wall or a person in this step
-  bool droveInto = false; // ... by its own motion (else a person walked into it while it moved)
-  bool bumped = false;    // a person walked into the robot standing still in this step
+  bool bumped = false;    // a person walked into the robot in this step (people/ContactBlame.h)
 };
 
 class Simulation {
  public:
-  // Below these the robot stands still: a person touching it then bumped into it, otherwise the
-  // robot drove into the person.
-  static constexpr double kStillSpeed = 0.01;     // m/s
-  static constexpr double kStillRotation = 0.01;  // rad/s
-
   // Keeps a reference to `world`, which must outlive the simulation. Throws InvalidArgumentError
   // if the robot's footprint at the start pose overlaps a blocked cell, or if there is no room
   // for the people away from the robot.
@@ -80,10 +74,11 @@ class Simulation {
   const Pose2D& odometryPose() const { return odometryPose_; }
   Timestamp time() const { return time_; }
   // Steps in which the robot drove into something: a wall (grid cell) or a person, including a
-  // person walking into the robot while it moved (|v| > kStillSpeed or |w| > kStillRotation).
-  // A robot commanded on against an obstacle collides again in every step it is commanded so.
+  // person it touched with its outline moving towards them (people/ContactBlame.h). A robot
+  // commanded on against an obstacle collides again in every step it is commanded so.
   std::uint64_t robotCollisions() const { return robotCollisions_; }
-  // People who walked into the robot while it stood still (each contact counted once).
+  // People who walked into the robot: it stood, drove away from them or passed them sideways
+  // (each contact counted once).
   std::uint64_t personBumps() const { return personBumps_; }
   // Where the people are (empty without people).
   std::span<const Person> people() const;

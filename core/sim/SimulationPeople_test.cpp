@@ -1,5 +1,6 @@
 // Tests people in the simulation: a person walking into a robot that stands still is a bump, not
-// a collision; people the driving robot meets are the robot's collisions; neither ever overlaps
+// a collision; people the driving robot meets are the robot's collisions (those who walk into it
+// from behind or the side are bumps: people/ContactBlame_test.cpp); neither ever overlaps
 // the other; the laser sees the people; the people keys of the sim YAML; and SimulatedRobot
 // passing people and both counters on.
 #include <cppunit/extensions/HelperMacros.h>
@@ -85,7 +86,6 @@ class SimulationPeopleTest : public CppUnit::TestFixture {
     }
     CPPUNIT_ASSERT(simulation.robotCollisions() > 0);
     CPPUNIT_ASSERT_EQUAL(simulation.robotCollisions(), std::uint64_t(collidedSteps));
-    CPPUNIT_ASSERT_EQUAL(std::uint64_t(0), simulation.personBumps());
   }
 
   void theLaserSeesThePeople() {

@@ -6,7 +6,7 @@
 // consumers allow, deterministic for a seed). --record writes the run as a CARMEN log. --people N
 // lets N people walk through the world (moving obstacles); the module's health counts
 // robot_collisions (the robot drove into a wall or person) and person_bumps (a person walked into
-// the robot standing still); each collision is also a line on stderr (time, true pose, velocity).
+// the robot: standing, driving away or passing); each collision is also a line on stderr.
 #include <atomic>
 #include <fstream>
 #include <iostream>

@@ -122,13 +122,19 @@ bool CollisionAvoidance::currentStillFree(const RobotState& state, const Obstacl
 }
 
 void CollisionAvoidance::dropPassedTargets(const Pose2D& from) {
-  const double c = std::cos(from.theta), s = std::sin(from.theta);
+  // From the first on: a target is passed when the robot came within targetPassedM of it, or is
+  // beside the stretch to the next one (past the target along it, within twice that of it: it went
+  // around something standing on the target). A target the robot only drove by at a distance (the
+  // door beside the hallway it overshot) stays: the robot turns back to it.
   std::size_t passed = 0;
   while (passed + 1 < targets_.size()) {
-    const Pose2D& t = targets_[passed];
-    const double d = distance(t, from);
-    const double ahead = (t.x - from.x) * c + (t.y - from.y) * s;
-    if (d >= config_.targetPassedM && (ahead >= 0.0 || d >= 2.0 * config_.targetPassedM)) break;
+    const Pose2D& a = targets_[passed];
+    const Pose2D& b = targets_[passed + 1];
+    const double length = distance(a, b);
+    const double u = length > 0.0 ? ((from.x - a.x) * (b.x - a.x) + (from.y - a.y) * (b.y - a.y)) / (length * length) : 0.0;
+    const double beside = std::hypot(a.x + std::clamp(u, 0.0, 1.0) * (b.x - a.x) - from.x,
+                                     a.y + std::clamp(u, 0.0, 1.0) * (b.y - a.y) - from.y);
+    if (distance(a, from) >= config_.targetPassedM && !(u > 0.0 && beside < 2.0 * config_.targetPassedM)) break;
     ++passed;
   }
   targets_.erase(targets_.begin(), targets_.begin() + static_cast<std::ptrdiff_t>(passed));
@@ -207,9 +213,13 @@ std::optional<CollisionAvoidance::Scored> CollisionAvoidance::bestCandidate(cons
       candidate.chain = sliceChain(candidate.chain, 0.0, keep);
       cost += kCutPenaltyS;
     }
+    // Manoeuvres (deviations and fans) drive no faster than their tight turns allow, so that the
+    // robot can still turn tightly from anywhere on them (into the door it would otherwise pass).
+    const bool manoeuvre = candidate.kind == Candidate::Kind::Deviation || candidate.kind == Candidate::Kind::Fan;
     std::optional<TimedTrajectory> timed;
     try {
-      timed.emplace(candidate.chain, limits_, start.state.speed, 0.0);
+      timed.emplace(candidate.chain, limits_, start.state.speed, 0.0,
+                    manoeuvre ? manoeuvreSpeed() : std::numeric_limits<double>::infinity());
     } catch (const InvalidArgumentError&) {
       continue;  // cannot stop within it from the start speed
     }
@@ -228,6 +238,10 @@ double CollisionAvoidance::turnableUntil(const TrajectoryChain& chain, double en
   for (double s = end; s >= kMinChainM; s -= kTurnableStepM)
     if (clearance.footprintClearance(turning, chain.poseAt(s), needed) >= needed) return s;
   return 0.0;
+}
+
+double CollisionAvoidance::manoeuvreSpeed() const {
+  return std::sqrt(limits_.maxRotationalAcceleration / config_.candidates.manoeuvreSharpnessPerM2);
 }
 
 double CollisionAvoidance::brakingDistance(double speed) const {

@@ -3,7 +3,9 @@
 // the obstacle grids, each update() decides:
 //   Keep        the chain being driven is still free (re-checked against every new grid);
 //   Drive       a new DriveChain: the best free candidate (ChainCandidates.h) scored by its
-//               predicted time, the path left from its end to the goal and its clearance; it
+//               predicted time, the path left from its end to the goal and its clearance
+//               (manoeuvres away from the path drive at most as fast as their tight turns can be
+//               entered, so the robot can still turn into a door it comes by); it
 //               starts where the reference of the current chain will be one planning latency
 //               from now (startTime on the odometry clock) and ends at a standstill in checked
 //               free space, so the robot stops safely if this module dies;
@@ -96,6 +98,9 @@ class CollisionAvoidance {
   std::optional<Scored> bestCandidate(const PlanStart& start, const ObstacleClearance& clearance) const;
   // The largest arc length up to `end` (in steps) where the robot could turn on the spot, or 0.
   double turnableUntil(const TrajectoryChain& chain, double end, const ObstacleClearance& clearance) const;
+  // The speed up to which the manoeuvres' turns can be entered (rotational acceleration over
+  // their sharpness).
+  double manoeuvreSpeed() const;
   double brakingDistance(double speed) const;
   std::optional<TimedTrajectory> brakingChain(const PlanStart& start) const;
   AvoidanceDecision send(const RobotState& state, TimedTrajectory timed, AvoidanceAction action, std::string reason);

@@ -2,7 +2,7 @@
 // drives the targets in free space, stops (or brakes short) when an obstacle appears on the chain
 // it drives, goes around a box on its path, and reports blocked once walled in for
 // blocked_wait_s, and leaves a room by its door when the path's later part (the hallway) lies
-// just behind the wall it faces.
+// just behind the wall it faces, and keeps the target of a door it drove by (it turns back to it).
 #include <cppunit/extensions/HelperMacros.h>
 
 #include <cmath>
@@ -49,29 +49,6 @@ class PerfectRobot {
     timed_.emplace(chain.chain, limits_, chain.startSpeed, 0.0);
   }
 
-  void leavesARoomByItsDoorNotTowardsTheHallwayBehindItsWall() {
-    // A room (x -3..2, y -1..3) with its door in the east wall (y 0.5..1.5) onto a corridor (x 2..4)
-    // that turns west into a hallway (y -3..-1) behind the room's south wall. The robot stands in
-    // the room facing west; the path goes east through the door, south, then west along the hallway.
-    const ObstacleGrid rooms = gridWith({{-5.0, -1.1, 4.1, -1.0},   // the room's south wall
-                                         {-5.0, -3.1, 4.1, -3.0},   // the hallway's south wall
-                                         {2.0, -1.0, 2.1, 0.5},     // the east wall, the door,
-                                         {2.0, 1.5, 2.1, 3.1},
-                                         {-3.1, -1.0, -3.0, 3.1},   // west and north walls
-                                         {-3.0, 3.0, 2.0, 3.1},
-                                         {4.0, -3.0, 4.1, 3.1}},    // the corridor's east wall
-                                        0.0);
-    std::vector<Pose2D> targets{{1.0, 1.0, 0.0}, {2.0, 1.0, 0.0}, {3.0, 1.0, -M_PI / 2}, {3.0, 0.0, -M_PI / 2},
-                                {3.0, -1.0, -M_PI / 2}};
-    for (double x = 3.0; x >= -4.0 - 1e-9; x -= 1.0) targets.push_back({x, -2.0, M_PI});
-    CollisionAvoidance cam({}, kJackal, limits_);
-    cam.setTargets(targets);
-    const AvoidanceDecision d = cam.update({0.0, {0.0, 0.0, M_PI}, 0.0, 0.0}, std::span(&rooms, 1));
-    CPPUNIT_ASSERT(d.action == AvoidanceAction::Drive);
-    CPPUNIT_ASSERT(d.chain);
-    CPPUNIT_ASSERT(d.chain->chain.end().x > 1.0);  // towards the door, not west
-  }
-
  private:
   MotionLimits limits_;
   Pose2D standing_;
@@ -88,6 +65,7 @@ class CollisionAvoidanceTest : public CppUnit::TestFixture {
   CPPUNIT_TEST(goesAroundABox);
   CPPUNIT_TEST(reportsBlockedWhenWalledIn);
   CPPUNIT_TEST(leavesARoomByItsDoorNotTowardsTheHallwayBehindItsWall);
+  CPPUNIT_TEST(keepsTheDoorTargetItDroveBy);
   CPPUNIT_TEST_SUITE_END();
 
  public:
@@ -183,6 +161,16 @@ class CollisionAvoidanceTest : public CppUnit::TestFixture {
     CPPUNIT_ASSERT(d.action == AvoidanceAction::Drive);
     CPPUNIT_ASSERT(d.chain);
     CPPUNIT_ASSERT(d.chain->chain.end().x > 1.0);  // towards the door, not west
+  }
+
+  void keepsTheDoorTargetItDroveBy() {
+    // The path turns right at (2, 0) through a door to (2, -1) and on to (2, -2); the robot went
+    // on 0.6 m past the turn: the hallway targets are passed, the door's is not.
+    CollisionAvoidance cam({}, kJackal, limits_);
+    cam.setTargets({{1.0, 0.0, 0.0}, {2.0, 0.0, -M_PI / 2}, {2.0, -1.0, -M_PI / 2}, {2.0, -2.0, -M_PI / 2}});
+    cam.update({0.0, {2.6, -0.3, 0.0}, 0.0, 0.0}, std::span(&free_, 1));
+    CPPUNIT_ASSERT_EQUAL(std::size_t(2), cam.targets().size());
+    CPPUNIT_ASSERT_DOUBLES_EQUAL(-1.0, cam.targets().front().y, 1e-12);
   }
 
  private:

@@ -107,6 +107,19 @@ bool Footprint::overlapsDisk(const Pose2D& pose, WorldPoint centre, double r) co
   return du * du + dn * dn < r * r;
 }
 
+WorldPoint Footprint::nearestPoint(const Pose2D& pose, WorldPoint p) const {
+  if (shape == Shape::Disk) {
+    const double d = std::hypot(p.x - pose.x, p.y - pose.y);
+    if (d <= radius) return p;
+    return {pose.x + (p.x - pose.x) * radius / d, pose.y + (p.y - pose.y) * radius / d};
+  }
+  const PlacedRectangle rect = place(*this, pose);
+  const WorldPoint d{p.x - rect.centre.x, p.y - rect.centre.y};
+  const double u = std::clamp(dot(d, rect.u), -rect.halfLength, rect.halfLength);
+  const double n = std::clamp(dot(d, rect.n), -rect.halfWidth, rect.halfWidth);
+  return {rect.centre.x + u * rect.u.x + n * rect.n.x, rect.centre.y + u * rect.u.y + n * rect.n.y};
+}
+
 bool Footprint::overlapsGrid(const OccupancyGrid& grid, const Pose2D& pose) const {
   if (shape == Shape::Disk) return diskCollides(grid, {pose.x, pose.y}, radius);
   const PlacedRectangle r = place(*this, pose);

@@ -31,6 +31,8 @@ struct Footprint {
 
   // Whether the footprint at `pose` overlaps the disk (centre, r).
   bool overlapsDisk(const Pose2D& pose, WorldPoint centre, double r) const;
+  // The footprint's point (at `pose`) nearest to `p` (p itself when inside).
+  WorldPoint nearestPoint(const Pose2D& pose, WorldPoint p) const;
   // Whether the footprint at `pose` overlaps a blocked cell (occupied, unknown or outside).
   bool overlapsGrid(const OccupancyGrid& grid, const Pose2D& pose) const;
 };

@@ -58,6 +58,7 @@ class FootprintTest : public CppUnit::TestFixture {
   CPPUNIT_TEST(rectangleAgreesWithSampling);
   CPPUNIT_TEST(diskVersusGridIsTheDiskTest);
   CPPUNIT_TEST(badSizesAreConfigErrors);
+  CPPUNIT_TEST(nearestPointIsOnTheOutline);
   CPPUNIT_TEST_SUITE_END();
 
  public:
@@ -72,6 +73,22 @@ class FootprintTest : public CppUnit::TestFixture {
     CPPUNIT_ASSERT_DOUBLES_EQUAL(std::hypot(0.5, 0.25), ahead.circumradius(), 1e-12);
     CPPUNIT_ASSERT_DOUBLES_EQUAL(0.1, ahead.inscribedRadius(), 1e-12);
     CPPUNIT_ASSERT_DOUBLES_EQUAL(0.0, Footprint::rectangle(0.6, 0.5, 0.4).inscribedRadius(), 1e-12);
+  }
+
+  void nearestPointIsOnTheOutline() {
+    const WorldPoint onDisk = Footprint::disk(0.25).nearestPoint({1.0, 1.0, 0.0}, {1.0, 2.0});
+    CPPUNIT_ASSERT_DOUBLES_EQUAL(1.0, onDisk.x, 1e-12);
+    CPPUNIT_ASSERT_DOUBLES_EQUAL(1.25, onDisk.y, 1e-12);
+    // Heading +y, x from 0.8 to 1.2, y from 1.8 to 2.4: off the front-left corner, then beside.
+    const Footprint f = Footprint::rectangle(0.6, 0.4, 0.1);
+    const WorldPoint corner = f.nearestPoint({1.0, 2.0, M_PI / 2.0}, {0.5, 3.0});
+    CPPUNIT_ASSERT_DOUBLES_EQUAL(0.8, corner.x, 1e-12);
+    CPPUNIT_ASSERT_DOUBLES_EQUAL(2.4, corner.y, 1e-12);
+    const WorldPoint side = f.nearestPoint({1.0, 2.0, M_PI / 2.0}, {2.0, 2.0});
+    CPPUNIT_ASSERT_DOUBLES_EQUAL(1.2, side.x, 1e-12);
+    CPPUNIT_ASSERT_DOUBLES_EQUAL(2.0, side.y, 1e-12);
+    const WorldPoint inside = f.nearestPoint({1.0, 2.0, M_PI / 2.0}, {1.1, 2.1});
+    CPPUNIT_ASSERT_DOUBLES_EQUAL(1.1, inside.x, 1e-12);
   }
 
   void cornersFollowThePose() {

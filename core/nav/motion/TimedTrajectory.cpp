@@ -78,7 +78,7 @@ std::size_t intervalAt(const std::vector<double>& grid, double value) {
 }  // namespace
 
 TimedTrajectory::TimedTrajectory(TrajectoryChain chain, const MotionLimits& limits, double startSpeed,
-                                 double endSpeed)
+                                 double endSpeed, double cruiseSpeed)
     : chain_(std::move(chain)) {
   validate(limits);
   if (chain_.empty()) throw InvalidArgumentError("timed trajectory: empty chain");
@@ -111,6 +111,10 @@ TimedTrajectory::TimedTrajectory(TrajectoryChain chain, const MotionLimits& limi
     }
   }
   const double w0 = startSpeed * startSpeed, wEnd = endSpeed * endSpeed;
+  if (!(cruiseSpeed > 0.0)) throw InvalidArgumentError("timed trajectory: the cruise speed must be positive");
+  if (std::isfinite(cruiseSpeed))
+    for (std::size_t j = 0; j <= n; ++j)
+      cap[j] = std::min(cap[j], std::max(cruiseSpeed * cruiseSpeed, w0 - 2.0 * limits.maxDeceleration * s_[j]));
   if (w0 > cap.front() * (1.0 + 1e-9)) {
     throw InvalidArgumentError("timed trajectory: start speed " + std::to_string(startSpeed) +
                                " m/s is above what the limits allow at the chain's start (" +

@@ -12,6 +12,7 @@
 // curvature-continuous chains are the fast ones.
 #pragma once
 
+#include <limits>
 #include <vector>
 
 #include "core/nav/motion/MotionLimits.h"
@@ -33,8 +34,10 @@ class TimedTrajectory {
   TimedTrajectory() = default;
   // Throws InvalidArgumentError for an empty chain or a start speed above what the limits allow
   // at the chain's start, or if the chain is too short to reach `endSpeed` from `startSpeed`
-  // (a start speed that cannot brake to the end speed within the chain).
-  TimedTrajectory(TrajectoryChain chain, const MotionLimits& limits, double startSpeed = 0.0, double endSpeed = 0.0);
+  // (a start speed that cannot brake to the end speed within the chain). `cruiseSpeed`: a lower
+  // top speed for this chain; a faster start brakes down to it at the deceleration limit.
+  TimedTrajectory(TrajectoryChain chain, const MotionLimits& limits, double startSpeed = 0.0, double endSpeed = 0.0,
+                  double cruiseSpeed = std::numeric_limits<double>::infinity());
 
   const TrajectoryChain& chain() const { return chain_; }
   double duration() const;       // s: the predicted time to drive the chain

@@ -3,7 +3,8 @@
 // predicted time matches a drive that integrates the profile's speeds; time and arc length
 // invert each other; a turn on the spot shorter than a grid step is timed; curvature jumps are
 // passed slowly enough for the rotational acceleration; start speeds the chain
-// cannot take or brake from are rejected.
+// cannot take or brake from are rejected; a cruise speed below the top speed holds after braking
+// down to it from a faster start.
 #include <cppunit/extensions/HelperMacros.h>
 
 #include <cmath>
@@ -42,6 +43,7 @@ class TimedTrajectoryTest : public CppUnit::TestFixture {
   CPPUNIT_TEST(turnOnTheSpotIsTimed);
   CPPUNIT_TEST(curvatureJumpsAreSlowed);
   CPPUNIT_TEST(startSpeedsAreChecked);
+  CPPUNIT_TEST(cruiseSpeedHoldsAfterBraking);
   CPPUNIT_TEST_SUITE_END();
 
  public:
@@ -151,6 +153,19 @@ class TimedTrajectoryTest : public CppUnit::TestFixture {
     CPPUNIT_ASSERT_NO_THROW(TimedTrajectory(shortStraight, MotionLimits{}, 0.6));
     CPPUNIT_ASSERT_THROW(TimedTrajectory(TrajectoryChain{}, MotionLimits{}), rgnav::InvalidArgumentError);
     CPPUNIT_ASSERT_THROW(TimedTrajectory(shortStraight, MotionLimits{}, -0.1), rgnav::InvalidArgumentError);
+  }
+
+  void cruiseSpeedHoldsAfterBraking() {
+    TrajectoryChain chain;
+    chain.append({{0.0, 0.0, 0.0}, 4.0, 0.0, 0.0});
+    // From 1 m/s, braking at 0.5 m/s^2 to 0.5 m/s takes 0.75 m (1 s); then 0.5 m/s until the stop.
+    const TimedTrajectory timed(chain, MotionLimits{}, 1.0, 0.0, 0.5);
+    CPPUNIT_ASSERT_DOUBLES_EQUAL(1.0, timed.startSpeed(), 1e-12);
+    CPPUNIT_ASSERT_DOUBLES_EQUAL(std::sqrt(0.5), timed.speedAt(0.5), 1e-6);  // v^2 = 1 - 2 * 0.5 * 0.5
+    CPPUNIT_ASSERT_DOUBLES_EQUAL(0.5, timed.speedAt(2.0), 1e-9);
+    // 1 s down to 0.5 m/s, (4 - 0.75 - 0.25) m at 0.5 m/s, 1 s to the stop.
+    CPPUNIT_ASSERT_DOUBLES_EQUAL(1.0 + 3.0 / 0.5 + 1.0, timed.duration(), 1e-3);
+    CPPUNIT_ASSERT_THROW(TimedTrajectory(chain, MotionLimits{}, 0.0, 0.0, 0.0), rgnav::InvalidArgumentError);
   }
 };
 

@@ -111,8 +111,8 @@ void Crowd::newLeg(Walk& walk, const std::optional<WorldPoint>& awayFrom) {
   }
 }
 
-int Crowd::step(double dt, const Footprint& robot, const Pose2D& robotPose) {
-  int contacts = 0;
+std::vector<WorldPoint> Crowd::step(double dt, const Footprint& robot, const Pose2D& robotPose) {
+  std::vector<WorldPoint> contacts;
   for (std::size_t i = 0; i < people_.size(); ++i) {
     Person& person = people_[i];
     Walk& walk = walks_[i];
@@ -136,7 +136,7 @@ int Crowd::step(double dt, const Footprint& robot, const Pose2D& robotPose) {
       }
     }
     if (robot.overlapsDisk(robotPose, p, person.radius)) {
-      if (!walk.inContact) ++contacts;
+      if (!walk.inContact) contacts.push_back(person.position);
       walk.inContact = true;
       person.velocity = {0.0, 0.0};
       // The new path starts at the last waypoint: back the way it came (free of walls), then on

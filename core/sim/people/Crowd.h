@@ -49,9 +49,9 @@ class Crowd {
         const Pose2D& robotPose);
 
   // Walks everybody `dt` seconds on. A person whose step would overlap the robot (footprint
-  // `robot` at `robotPose`) stays where it was and takes a new goal; returns how many people
-  // came into contact with the robot in this step and were not in contact the step before.
-  int step(double dt, const Footprint& robot, const Pose2D& robotPose);
+  // `robot` at `robotPose`) stays where it was and takes a new goal; returns where the people are
+  // who came into contact with the robot in this step and were not in contact the step before.
+  std::vector<WorldPoint> step(double dt, const Footprint& robot, const Pose2D& robotPose);
 
   const std::vector<Person>& people() const { return people_; }
   // The people as obstacles for the robot's collision check and the laser.

@@ -120,7 +120,7 @@ class CrowdTest : public CppUnit::TestFixture {
     Crowd crowd(grid, people(3, 2), 2, kRobot, robot);
     int contacts = 0;
     for (int k = 0; k < 2400; ++k) {
-      contacts += crowd.step(kDt, kRobot, robot);
+      contacts += static_cast<int>(crowd.step(kDt, kRobot, robot).size());
       for (const Person& p : crowd.people()) {
         CPPUNIT_ASSERT(!kRobot.overlapsDisk(robot, p.position, p.radius));
         CPPUNIT_ASSERT(!diskCollides(grid, p.position, p.radius));
