@@ -214,12 +214,15 @@ std::optional<CollisionAvoidance::Scored> CollisionAvoidance::bestCandidate(cons
       cost += kCutPenaltyS;
     }
     // Manoeuvres (deviations and fans) drive no faster than their tight turns allow, so that the
-    // robot can still turn tightly from anywhere on them (into the door it would otherwise pass).
+    // robot can still turn tightly from anywhere on them (into the door it would otherwise pass);
+    // a chain cut short by an obstacle no faster than lets the robot stop before it should it
+    // come on (a person walking towards the robot).
     const bool manoeuvre = candidate.kind == Candidate::Kind::Deviation || candidate.kind == Candidate::Kind::Fan;
+    double cruise = manoeuvre ? manoeuvreSpeed() : std::numeric_limits<double>::infinity();
+    if (!check.clear) cruise = std::min(cruise, oncomingStopSpeed(check.freeLength));
     std::optional<TimedTrajectory> timed;
     try {
-      timed.emplace(candidate.chain, limits_, start.state.speed, 0.0,
-                    manoeuvre ? manoeuvreSpeed() : std::numeric_limits<double>::infinity());
+      timed.emplace(candidate.chain, limits_, start.state.speed, 0.0, cruise);
     } catch (const InvalidArgumentError&) {
       continue;  // cannot stop within it from the start speed
     }
@@ -242,6 +245,12 @@ double CollisionAvoidance::turnableUntil(const TrajectoryChain& chain, double en
 
 double CollisionAvoidance::manoeuvreSpeed() const {
   return std::sqrt(limits_.maxRotationalAcceleration / config_.candidates.manoeuvreSharpnessPerM2);
+}
+
+double CollisionAvoidance::oncomingStopSpeed(double gap) const {
+  // v^2 / (2 a) + u v / a = gap: the robot's braking distance and what the obstacle walks meanwhile.
+  const double a = limits_.maxDeceleration, u = config_.oncomingSpeedMps;
+  return std::max(kStandingSpeed, -u + std::sqrt(u * u + 2.0 * a * std::max(gap, 0.0)));
 }
 
 double CollisionAvoidance::brakingDistance(double speed) const {

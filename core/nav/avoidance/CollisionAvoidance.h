@@ -5,7 +5,8 @@
 //   Drive       a new DriveChain: the best free candidate (ChainCandidates.h) scored by its
 //               predicted time, the path left from its end to the goal and its clearance
 //               (manoeuvres away from the path drive at most as fast as their tight turns can be
-//               entered, so the robot can still turn into a door it comes by); it
+//               entered, so the robot can still turn into a door it comes by; chains cut short
+//               by an obstacle slow enough to stop before it, should it come on); it
 //               starts where the reference of the current chain will be one planning latency
 //               from now (startTime on the odometry clock) and ends at a standstill in checked
 //               free space, so the robot stops safely if this module dies;
@@ -101,6 +102,9 @@ class CollisionAvoidance {
   // The speed up to which the manoeuvres' turns can be entered (rotational acceleration over
   // their sharpness).
   double manoeuvreSpeed() const;
+  // The speed from which the robot stops before an obstacle `gap` ahead that comes towards it at
+  // oncomingSpeedMps.
+  double oncomingStopSpeed(double gap) const;
   double brakingDistance(double speed) const;
   std::optional<TimedTrajectory> brakingChain(const PlanStart& start) const;
   AvoidanceDecision send(const RobotState& state, TimedTrajectory timed, AvoidanceAction action, std::string reason);

@@ -54,6 +54,7 @@ void validate(const CollisionAvoidanceConfig& c) {
   nonNegative(c.clearanceWeightSPerM, "clearance_weight_s_per_m");
   nonNegative(c.progressWeightSPerM, "progress_weight_s_per_m");
   nonNegative(c.planningLatencyS, "planning_latency_s");
+  nonNegative(c.oncomingSpeedMps, "oncoming_speed_mps");
   positive(c.replanPeriodS, "replan_period_s");
   nonNegative(c.refreshDistanceM, "refresh_distance_m");
   positive(c.targetPassedM, "target_passed_m");

@@ -11,7 +11,7 @@ static_assert(sizeof(LaserObstacleMapConfig) == 10 * sizeof(double));
 static_assert(sizeof(CandidateConfig) == 9 * sizeof(double) + 3 * sizeof(std::size_t));
 static_assert(sizeof(GoalSeekingConfig) == 6 * sizeof(double));
 static_assert(sizeof(CollisionAvoidanceConfig) == sizeof(LaserObstacleMapConfig) + sizeof(CandidateConfig) +
-                                                      sizeof(GoalSeekingConfig) + 12 * sizeof(double));
+                                                      sizeof(GoalSeekingConfig) + 13 * sizeof(double));
 
 CollisionAvoidanceConfig parseCollisionAvoidanceConfig(const std::string& yamlText, const std::string& path) {
   return parseChecked<CollisionAvoidanceConfig>(yamlText, path,

@@ -57,6 +57,7 @@ void describe(V& v, CollisionAvoidanceConfig& c) {
   v.section("goal_seeking", c.goalSeeking);
   v.field("safety_margin_m", c.safetyMarginM);
   v.field("escape_margin_m", c.escapeMarginM);
+  v.field("oncoming_speed_mps", c.oncomingSpeedMps);
   v.field("sample_step_m", c.sampleStepM);
   v.field("comfort_clearance_m", c.comfortClearanceM);
   v.field("clearance_weight_s_per_m", c.clearanceWeightSPerM);
