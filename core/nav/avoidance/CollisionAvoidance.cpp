@@ -15,6 +15,7 @@ namespace {
 // tracks it this closely; otherwise the next chain starts where the robot will be, at its speed.
 constexpr double kMaxTrackingErrorM = 0.1;
 constexpr double kMaxTrackingErrorRad = 0.3;
+constexpr double kMaxTrackingErrorMps = 0.15;
 // A robot slower than this stands.
 constexpr double kStandingSpeed = 0.02;
 constexpr double kStandingTurnRate = 0.05;
@@ -73,9 +74,11 @@ CollisionAvoidance::PlanStart CollisionAvoidance::planStart(const RobotState& st
     const double t = state.stamp + config_.planningLatencyS - current_->startTime;
     if (t < currentTimed_->duration()) {
       const ReferenceState ref = currentTimed_->stateAt(std::max(t, 0.0));
-      const Pose2D now = currentTimed_->stateAt(std::max(state.stamp - current_->startTime, 0.0)).pose;
+      const ReferenceState nowRef = currentTimed_->stateAt(std::max(state.stamp - current_->startTime, 0.0));
+      const Pose2D& now = nowRef.pose;
       if (distance(now, state.pose) < kMaxTrackingErrorM &&
-          std::abs(normalizeAngle(now.theta - state.pose.theta)) < kMaxTrackingErrorRad) {
+          std::abs(normalizeAngle(now.theta - state.pose.theta)) < kMaxTrackingErrorRad &&
+          std::abs(nowRef.velocity - state.velocity) < kMaxTrackingErrorMps) {
         const TrajectoryChain& chain = current_->chain;
         // The lead: the rest of the turn the reference is in, up to where the curvature is 0.
         double leadEnd = ref.s;

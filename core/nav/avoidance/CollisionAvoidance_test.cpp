@@ -2,7 +2,8 @@
 // drives the targets in free space, stops (or brakes short) when an obstacle appears on the chain
 // it drives, goes around a box on its path, and reports blocked once walled in for
 // blocked_wait_s, and leaves a room by its door when the path's later part (the hallway) lies
-// just behind the wall it faces, and keeps the target of a door it drove by (it turns back to it).
+// just behind the wall it faces, keeps the target of a door it drove by (it turns back to it), and
+// gets away from a wall it braked into.
 #include <cppunit/extensions/HelperMacros.h>
 
 #include <cmath>
@@ -66,6 +67,7 @@ class CollisionAvoidanceTest : public CppUnit::TestFixture {
   CPPUNIT_TEST(reportsBlockedWhenWalledIn);
   CPPUNIT_TEST(leavesARoomByItsDoorNotTowardsTheHallwayBehindItsWall);
   CPPUNIT_TEST(keepsTheDoorTargetItDroveBy);
+  CPPUNIT_TEST(getsAwayFromTheWallItStandsAgainst);
   CPPUNIT_TEST_SUITE_END();
 
  public:
@@ -161,6 +163,23 @@ class CollisionAvoidanceTest : public CppUnit::TestFixture {
     CPPUNIT_ASSERT(d.action == AvoidanceAction::Drive);
     CPPUNIT_ASSERT(d.chain);
     CPPUNIT_ASSERT(d.chain->chain.end().x > 1.0);  // towards the door, not west
+  }
+
+  void getsAwayFromTheWallItStandsAgainst() {
+    // A round robot braked into a hallway's wall (y -1.0 .. -1.1; the cells hit straddle y = -1) facing it;
+    // its path runs along the hallway's middle.
+    const Footprint disk = Footprint::disk(0.25);
+    const ObstacleGrid walls = gridWith({{-5.0, -1.1, 5.0, -0.95}, {-5.0, 1.0, 5.0, 1.1}}, 0.0);
+    std::vector<Pose2D> targets;
+    for (double x = 0.5; x <= 4.0 + 1e-9; x += 0.5) targets.push_back({x, 0.0, 0.0});
+    CollisionAvoidance cam({}, disk, limits_);
+    cam.setTargets(targets);
+    AvoidanceAction last = AvoidanceAction::Wait;
+    for (int i = 0; i <= 40 && last != AvoidanceAction::Drive; ++i) {
+      const AvoidanceDecision d = cam.update({0.1 * i, {0.0, -0.71, -1.66}, 0.0, 0.0}, std::span(&walls, 1));
+      last = d.action;
+    }
+    CPPUNIT_ASSERT(last == AvoidanceAction::Drive);
   }
 
   void keepsTheDoorTargetItDroveBy() {

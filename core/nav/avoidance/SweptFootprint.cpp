@@ -14,6 +14,10 @@ namespace {
 constexpr double kFar = 1e9;
 // Heading change between two sampled poses at most, rad (turns on the spot).
 constexpr double kMaxTurnPerSample = 0.05;
+// A robot starting closer than the margin may come this much closer still near the start: a turn
+// on the spot is an arc of a millimetre radius (ChainCandidates.h), which moves the centre by up
+// to twice that.
+constexpr double kReliefSlackM = 0.005;
 
 OccupancyGrid onlyOccupied(OccupancyGrid grid) {
   for (int row = 0; row < grid.height(); ++row)
@@ -90,7 +94,7 @@ SweptCheck checkSwept(const ObstacleClearance& clearance, const TrajectoryChain&
   // A robot that already stands closer than the margin (or, by the cells' coarseness, seems to
   // touch) may leave: near the start it must only not come closer.
   const double atStart = clearance.footprintClearance(footprint, chain.start(), out.minClearance);
-  const double startRequired = std::min(options.marginM, atStart);
+  const double startRequired = atStart < options.marginM ? atStart - kReliefSlackM : options.marginM;
   for (std::size_t i = 0; i < samples.size(); ++i) {
     const double s = samples[i];
     const double d = i == 0 ? atStart : clearance.footprintClearance(footprint, chain.poseAt(s), out.minClearance);
