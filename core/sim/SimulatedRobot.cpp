@@ -45,7 +45,26 @@ void SimulatedRobot::logCollision(const SimulationStep& step) const {
   const Pose2D& p = step.truePose;
   *options_.collisionLog << "collision at t=" << step.odometry.stamp << " s: robot at (" << p.x << ", " << p.y << ", "
                          << p.theta << ") v=" << step.odometry.translationalVelocity << " m/s w=" << step.odometry.rotationalVelocity
-                         << " rad/s" << std::endl;
+                         << " rad/s";
+  // The nearest person, in the robot's frame, with its velocity: whether it was a person and how
+  // the two met.
+  const Person* nearest = nullptr;
+  double best = 0.0;
+  for (const Person& person : simulation_.people()) {
+    const double d = std::hypot(person.position.x - p.x, person.position.y - p.y);
+    if (!nearest || d < best) {
+      nearest = &person;
+      best = d;
+    }
+  }
+  if (nearest) {
+    const double c = std::cos(p.theta), s = std::sin(p.theta);
+    const double dx = nearest->position.x - p.x, dy = nearest->position.y - p.y;
+    const WorldPoint& u = nearest->velocity;
+    *options_.collisionLog << ", nearest person at (" << c * dx + s * dy << ", " << -s * dx + c * dy
+                           << ") in the robot's frame walking (" << c * u.x + s * u.y << ", " << -s * u.x + c * u.y << ") m/s";
+  }
+  *options_.collisionLog << std::endl;
 }
 
 void SimulatedRobot::step() {

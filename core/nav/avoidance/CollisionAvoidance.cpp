@@ -21,6 +21,9 @@ constexpr double kStandingSpeed = 0.02;
 constexpr double kStandingTurnRate = 0.05;
 // A robot this slow within the goal tolerance has arrived (the drive settles the rest).
 constexpr double kArrivalSpeed = 0.1;
+// The drive settles at a chain's end for up to 3 s (LowLevelDrive); after its time and this the
+// robot has not arrived.
+constexpr double kArrivalGraceS = 4.0;
 // Curvatures below this are straight.
 constexpr double kStraight = 1e-6;
 // A new chain continues the current one's turn to its end if that lies within this.
@@ -334,7 +337,11 @@ AvoidanceDecision CollisionAvoidance::update(const RobotState& state, std::span<
                        state.stamp - lastPlan_ >= kRefreshPeriodS;
   const bool newTargets = targetsChanged_ && (!running || state.stamp - lastPlan_ >= config_.replanPeriodS);
   if (currentFree && running && !refresh && !newTargets) return {AvoidanceAction::Keep, std::nullopt, "chain free"};
-  if (currentFree && endsAtGoal && !newTargets) return {AvoidanceAction::Keep, std::nullopt, "arriving"};
+  // Arriving: the drive settles at the goal; a robot that stands short of it long after the chain's
+  // time (something it cannot see stopped it, and the drive gave up) gets a new chain.
+  const bool arriving = current_ && currentTimed_ &&
+                        state.stamp - current_->startTime < currentTimed_->duration() + kArrivalGraceS;
+  if (currentFree && endsAtGoal && !newTargets && arriving) return {AvoidanceAction::Keep, std::nullopt, "arriving"};
 
   auto best = bestCandidate(start, clearance);
   if (!best) {

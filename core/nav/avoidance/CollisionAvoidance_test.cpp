@@ -3,7 +3,7 @@
 // it drives, goes around a box on its path, and reports blocked once walled in for
 // blocked_wait_s, and leaves a room by its door when the path's later part (the hallway) lies
 // just behind the wall it faces, keeps the target of a door it drove by (it turns back to it), and
-// gets away from a wall it braked into.
+// gets away from a wall it braked into, and drives again when stopped short of the goal.
 #include <cppunit/extensions/HelperMacros.h>
 
 #include <cmath>
@@ -68,6 +68,7 @@ class CollisionAvoidanceTest : public CppUnit::TestFixture {
   CPPUNIT_TEST(leavesARoomByItsDoorNotTowardsTheHallwayBehindItsWall);
   CPPUNIT_TEST(keepsTheDoorTargetItDroveBy);
   CPPUNIT_TEST(getsAwayFromTheWallItStandsAgainst);
+  CPPUNIT_TEST(drivesAgainWhenStoppedShortOfTheGoal);
   CPPUNIT_TEST_SUITE_END();
 
  public:
@@ -180,6 +181,22 @@ class CollisionAvoidanceTest : public CppUnit::TestFixture {
       last = d.action;
     }
     CPPUNIT_ASSERT(last == AvoidanceAction::Drive);
+  }
+
+  void drivesAgainWhenStoppedShortOfTheGoal() {
+    CollisionAvoidance cam({}, kJackal, limits_);
+    cam.setTargets(straightTargets(2.0));
+    const AvoidanceDecision first = cam.update({0.0, {}, 0.0, 0.0}, std::span(&free_, 1));
+    CPPUNIT_ASSERT(first.chain);
+    const double end = first.chain->startTime + TimedTrajectory(first.chain->chain, limits_).duration();
+    // Something the robot cannot see stopped it 1 m short: it stands there.
+    const RobotState stopped{end, {1.0, 0.0, 0.0}, 0.0, 0.0};
+    CPPUNIT_ASSERT(cam.update(stopped, std::span(&free_, 1)).action == AvoidanceAction::Keep);  // settling
+    RobotState later = stopped;
+    later.stamp = end + 5.0;
+    const AvoidanceDecision again = cam.update(later, std::span(&free_, 1));
+    CPPUNIT_ASSERT(again.action == AvoidanceAction::Drive);
+    CPPUNIT_ASSERT_DOUBLES_EQUAL(2.0, again.chain->chain.end().x, 1e-3);
   }
 
   void keepsTheDoorTargetItDroveBy() {
