@@ -24,11 +24,11 @@ TrajectoryChain fromIdl(const RGNav::TrajectorySegmentSeq& segments) {
 }
 
 RGNav::DriveChain toIdl(const DriveChain& c) {
-  return {c.id, toIdl(c.chain), c.startSpeed, toIdlTime(c.startTime)};
+  return {c.id, toIdl(c.chain), c.startSpeed, toIdlTime(c.startTime), c.cruiseSpeed};
 }
 
 DriveChain fromIdl(const RGNav::DriveChain& c) {
-  return {c.id, fromIdl(c.segments), c.startSpeed, fromIdl(c.startTime)};
+  return {c.id, fromIdl(c.segments), c.startSpeed, fromIdl(c.startTime), c.cruiseSpeed};
 }
 
 RGNav::MotionLimits toIdl(const MotionLimits& l) {

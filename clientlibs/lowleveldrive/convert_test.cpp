@@ -14,7 +14,7 @@ DriveChain threeSegmentChain() {
   const TrajectorySegment straight{{1.0, -2.0, 0.25}, 1.5, 0.0, 0.0};
   const TrajectorySegment clothoid{straight.end(), 0.8, 0.0, 1.25};
   const TrajectorySegment arc{clothoid.end(), 1.1, clothoid.curvatureAt(0.8), 0.0};
-  return DriveChain{17, TrajectoryChain({straight, clothoid, arc}), 0.35, 1234.567891};
+  return DriveChain{17, TrajectoryChain({straight, clothoid, arc}), 0.35, 1234.567891, 0.51};
 }
 
 }  // namespace
@@ -38,6 +38,7 @@ class LowLevelDriveConvertTest : public CppUnit::TestFixture {
     CPPUNIT_ASSERT(chain.chain.segments() == back.chain.segments());
     CPPUNIT_ASSERT_EQUAL(chain.chain.length(), back.chain.length());
     CPPUNIT_ASSERT_EQUAL(chain.startSpeed, back.startSpeed);
+    CPPUNIT_ASSERT_EQUAL(chain.cruiseSpeed, back.cruiseSpeed);
     CPPUNIT_ASSERT_DOUBLES_EQUAL(chain.startTime, back.startTime, 1e-6);
   }
 

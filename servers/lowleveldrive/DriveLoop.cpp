@@ -27,7 +27,7 @@ double wallSeconds(Clock::time_point t) { return std::chrono::duration<double>(t
 
 bool sameChain(const DriveChain& a, const DriveChain& b) {
   return a.id == b.id && a.chain.segments() == b.chain.segments() && a.startSpeed == b.startSpeed &&
-         a.startTime == b.startTime;
+         a.startTime == b.startTime && a.cruiseSpeed == b.cruiseSpeed;
 }
 
 }  // namespace

@@ -12,6 +12,8 @@ void LowLevelDriveImpl::setChain(const RGNav::DriveChain& chain) {
   serve(Raises::InvalidArgument, [&] {
     wire::requireId(chain.id, "chain");
     wire::requireFinite(chain.startSpeed, "chain");
+    wire::requireFinite(chain.cruiseSpeed, "chain");
+    if (chain.cruiseSpeed < 0.0) wire::refuse("chain", "the cruise speed is negative");
     wire::requireValid(chain.startTime, "chain");
     if (chain.segments.length() == 0 || chain.segments.length() > RGNav::MAX_CHAIN_SEGMENTS)
       wire::refuse("chain", "a chain has 1 to " + std::to_string(RGNav::MAX_CHAIN_SEGMENTS) + " segments, not " +

@@ -271,7 +271,7 @@ void HostileClient::addLowLevelDriveCalls() {
   const RGNav::TrajectorySegment straight{{1.5, 7.0, 0.0}, 1.0, 0.0, 0.0};
   // A chain of `segments` (the straight by default), with one field of it spoilt by `spoil`.
   auto chain = [straight](std::function<void(RGNav::DriveChain&)> spoil, CORBA::ULong segments = 1) {
-    RGNav::DriveChain out{kHugeId, {}, 0.0, {0, 0}};
+    RGNav::DriveChain out{kHugeId, {}, 0.0, {0, 0}, 0.0};
     out.segments.length(segments);
     for (CORBA::ULong i = 0; i < segments; ++i) out.segments[i] = straight;
     spoil(out);
@@ -287,6 +287,7 @@ void HostileClient::addLowLevelDriveCalls() {
       {"gap", chain([](RGNav::DriveChain&) {}, 2)},  // the second straight starts where the first did
       {"inf start speed", chain([](RGNav::DriveChain& d) { d.startSpeed = kInf; })},
       {"start speed beyond the limits", chain([](RGNav::DriveChain& d) { d.startSpeed = 1e6; })},
+      {"negative cruise speed", chain([](RGNav::DriveChain& d) { d.cruiseSpeed = -0.5; })},
       {"bad nsec", chain([](RGNav::DriveChain& d) { d.startTime.nsec = 2000000000u; })}};
   add(c, drive_, "LowLevelDrive.ping", [](D d) { d->ping(); });
   add(c, drive_, "LowLevelDrive.status", [](D d) { return d->status(); });

@@ -62,7 +62,7 @@ DriveChain straightThenArc(std::uint64_t id, const OdometryReading& from, double
   const TrajectorySegment straight{from.pose, straightM, 0.0, 0.0};
   const TrajectorySegment ease{straight.end(), easeM, 0.0, curvature / easeM};
   const TrajectorySegment arc{ease.end(), arcM, curvature, 0.0};
-  return DriveChain{id, TrajectoryChain({straight, ease, arc}), 0.0, from.stamp + 0.3};
+  return DriveChain{id, TrajectoryChain({straight, ease, arc}), 0.0, from.stamp + 0.3, 0.0};
 }
 
 }  // namespace rgnav::testing

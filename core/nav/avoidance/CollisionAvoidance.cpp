@@ -43,6 +43,13 @@ constexpr double kTurnSlackM = 0.05;
 constexpr double kOffPathWeight = 2.0;
 // What cutting a chain short costs: a chain that reaches its end beats one that stops early.
 constexpr double kCutPenaltyS = 2.0;
+// From a scan to the drive acting on it: the scan period and the planning latency, s.
+constexpr double kReactionS = 0.2;
+// A chain driven this much faster than the moving obstacles allow is replaced.
+constexpr double kSpeedSlackMps = 0.05;
+// Moving obstacles farther than this (clearance plus arc length) do not slow the robot, m: from
+// the top speed the robot stops within less (oncomingStopSpeed(6 m) is above 1.4 m/s at 0.5 m/s^2).
+constexpr double kMovingReachM = 6.0;
 
 double distance(const Pose2D& a, const Pose2D& b) { return std::hypot(a.x - b.x, a.y - b.y); }
 
@@ -204,8 +211,20 @@ std::vector<Candidate> CollisionAvoidance::candidatesFrom(const PlanStart& start
   return all;
 }
 
+double CollisionAvoidance::movingGap(const TrajectoryChain& chain, const ObstacleClearance& moving) const {
+  // The smallest footprint clearance to a moving obstacle plus the arc length where it occurs: a
+  // person straight ahead at d counts d, one beside the chain further on counts its distance
+  // along the chain on top.
+  double best = kMovingReachM;
+  const double length = chain.length();
+  for (double s = 0.0; s <= length && s < best; s += config_.sampleStepM)
+    best = std::min(best, s + std::max(0.0, moving.footprintClearance(footprint_, chain.poseAt(s), best - s)));
+  return best < kMovingReachM ? best : std::numeric_limits<double>::infinity();
+}
+
 std::optional<CollisionAvoidance::Scored> CollisionAvoidance::bestCandidate(const PlanStart& start,
-                                                                            const ObstacleClearance& clearance) const {
+                                                                            const ObstacleClearance& clearance,
+                                                                            const ObstacleClearance& moving) const {
   std::optional<Scored> best;
   for (Candidate& candidate : candidatesFrom(start)) {
     const SweptCheck check = checkSwept(clearance, candidate.chain, footprint_, checkOptions());
@@ -221,10 +240,11 @@ std::optional<CollisionAvoidance::Scored> CollisionAvoidance::bestCandidate(cons
     }
     // Manoeuvres (deviations and fans) drive no faster than their tight turns allow, so that the
     // robot can still turn tightly from anywhere on them (into the door it would otherwise pass);
-    // a chain cut short by an obstacle no faster than lets the robot stop before it should it
-    // come on (a person walking towards the robot).
+    // a chain cut short by an obstacle, or passing people, no faster than lets the robot stop
+    // before they could reach it (a person walking towards the robot).
     const bool manoeuvre = candidate.kind == Candidate::Kind::Deviation || candidate.kind == Candidate::Kind::Fan;
-    double cruise = manoeuvre ? manoeuvreSpeed() : std::numeric_limits<double>::infinity();
+    double cruise = std::min(manoeuvre ? manoeuvreSpeed() : std::numeric_limits<double>::infinity(),
+                             oncomingStopSpeed(movingGap(candidate.chain, moving)));
     if (!check.clear) cruise = std::min(cruise, oncomingStopSpeed(check.freeLength));
     std::optional<TimedTrajectory> timed;
     try {
@@ -254,9 +274,11 @@ double CollisionAvoidance::manoeuvreSpeed() const {
 }
 
 double CollisionAvoidance::oncomingStopSpeed(double gap) const {
-  // v^2 / (2 a) + u v / a = gap: the robot's braking distance and what the obstacle walks meanwhile.
-  const double a = limits_.maxDeceleration, u = config_.oncomingSpeedMps;
-  return std::max(kStandingSpeed, -u + std::sqrt(u * u + 2.0 * a * std::max(gap, 0.0)));
+  // What both cover while the robot reacts (L) and brakes: (u + v) L + v^2 / (2 a) + u v / a = gap.
+  if (!std::isfinite(gap)) return std::numeric_limits<double>::infinity();
+  const double a = limits_.maxDeceleration, u = config_.oncomingSpeedMps, L = kReactionS;
+  const double b = u / a + L, c = u * L - gap;
+  return std::max(kStandingSpeed, a * (-b + std::sqrt(std::max(0.0, b * b - 2.0 * c / a))));
 }
 
 double CollisionAvoidance::brakingDistance(double speed) const {
@@ -285,7 +307,8 @@ std::optional<TimedTrajectory> CollisionAvoidance::brakingChain(const PlanStart&
 
 AvoidanceDecision CollisionAvoidance::send(const RobotState& state, TimedTrajectory timed, AvoidanceAction action,
                                            std::string reason) {
-  DriveChain drive{nextId_++, timed.chain(), timed.startSpeed(), state.stamp + config_.planningLatencyS};
+  DriveChain drive{nextId_++, timed.chain(), timed.startSpeed(), state.stamp + config_.planningLatencyS,
+                   std::isfinite(timed.cruiseSpeed()) ? timed.cruiseSpeed() : 0.0};
   currentTimed_ = std::move(timed);
   current_ = drive;
   lastPlan_ = state.stamp;
@@ -328,6 +351,7 @@ AvoidanceDecision CollisionAvoidance::update(const RobotState& state, std::span<
     return {AvoidanceAction::GoalReached, std::nullopt, "at the goal"};
   }
   const ObstacleClearance clearance(fuseObstacles(grids));
+  const ObstacleClearance moving(fuseMovingObstacles(grids));
   const PlanStart start = planStart(state);
   dropPassedTargets(start.state.pose);
   const bool currentFree = currentStillFree(state, clearance);
@@ -336,20 +360,27 @@ AvoidanceDecision CollisionAvoidance::update(const RobotState& state, std::span<
   const bool refresh = !endsAtGoal && start.leftOnCurrent < config_.refreshDistanceM &&
                        state.stamp - lastPlan_ >= kRefreshPeriodS;
   const bool newTargets = targetsChanged_ && (!running || state.stamp - lastPlan_ >= config_.replanPeriodS);
-  if (currentFree && running && !refresh && !newTargets) return {AvoidanceAction::Keep, std::nullopt, "chain free"};
+  // People near the chain ahead: the robot must be slow enough to stop before they could reach it.
+  const bool tooFast = running && start.state.speed > kSpeedSlackMps +
+                                                          oncomingStopSpeed(movingGap(sliceChain(current_->chain, start.onCurrent,
+                                                                                                 current_->chain.length()),
+                                                                                      moving));
+  if (currentFree && running && !refresh && !newTargets && !tooFast)
+    return {AvoidanceAction::Keep, std::nullopt, "chain free"};
   // Arriving: the drive settles at the goal; a robot that stands short of it long after the chain's
   // time (something it cannot see stopped it, and the drive gave up) gets a new chain.
   const bool arriving = current_ && currentTimed_ &&
                         state.stamp - current_->startTime < currentTimed_->duration() + kArrivalGraceS;
   if (currentFree && endsAtGoal && !newTargets && arriving) return {AvoidanceAction::Keep, std::nullopt, "arriving"};
 
-  auto best = bestCandidate(start, clearance);
+  auto best = bestCandidate(start, clearance, moving);
   if (!best) {
     if (currentFree && running) return {AvoidanceAction::Keep, std::nullopt, "no better chain"};
     return wait(state, start, currentFree && running);
   }
   waitingSince_.reset();
-  return send(state, std::move(best->timed), AvoidanceAction::Drive, currentFree ? "replanned" : "obstacle on the chain");
+  return send(state, std::move(best->timed), AvoidanceAction::Drive,
+              !currentFree ? "obstacle on the chain" : tooFast ? "people near the chain" : "replanned");
 }
 
 }  // namespace rgnav

@@ -6,7 +6,8 @@
 //               predicted time, the path left from its end to the goal and its clearance
 //               (manoeuvres away from the path drive at most as fast as their tight turns can be
 //               entered, so the robot can still turn into a door it comes by; chains cut short
-//               by an obstacle slow enough to stop before it, should it come on); it
+//               by an obstacle, or passing moving ones (the grids' moving layer: people), slow
+//               enough to stop before they could reach the robot); it
 //               starts where the reference of the current chain will be one planning latency
 //               from now (startTime on the odometry clock) and ends at a standstill in checked
 //               free space, so the robot stops safely if this module dies;
@@ -96,14 +97,18 @@ class CollisionAvoidance {
   void dropPassedTargets(const Pose2D& from);
   double pathLeftFrom(const TrajectoryChain& chain) const;
   std::vector<Candidate> candidatesFrom(const PlanStart& start) const;
-  std::optional<Scored> bestCandidate(const PlanStart& start, const ObstacleClearance& clearance) const;
+  std::optional<Scored> bestCandidate(const PlanStart& start, const ObstacleClearance& clearance,
+                                      const ObstacleClearance& moving) const;
+  // How far moving obstacles are from the chain (clearance plus the arc length where it occurs;
+  // infinite without moving obstacles).
+  double movingGap(const TrajectoryChain& chain, const ObstacleClearance& moving) const;
   // The largest arc length up to `end` (in steps) where the robot could turn on the spot, or 0.
   double turnableUntil(const TrajectoryChain& chain, double end, const ObstacleClearance& clearance) const;
   // The speed up to which the manoeuvres' turns can be entered (rotational acceleration over
   // their sharpness).
   double manoeuvreSpeed() const;
   // The speed from which the robot stops before an obstacle `gap` ahead that comes towards it at
-  // oncomingSpeedMps.
+  // oncomingSpeedMps (both moving on while the robot reacts).
   double oncomingStopSpeed(double gap) const;
   double brakingDistance(double speed) const;
   std::optional<TimedTrajectory> brakingChain(const PlanStart& start) const;

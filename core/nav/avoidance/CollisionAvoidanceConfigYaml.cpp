@@ -7,7 +7,7 @@ namespace rgnav {
 
 // describe() lists every field (CollisionAvoidanceConfigYaml.h): a field added to a struct stops
 // the build here until it is listed there and in config/modules/collisionavoidance.yaml.
-static_assert(sizeof(LaserObstacleMapConfig) == 10 * sizeof(double));
+static_assert(sizeof(LaserObstacleMapConfig) == 11 * sizeof(double));
 static_assert(sizeof(CandidateConfig) == 9 * sizeof(double) + 3 * sizeof(std::size_t));
 static_assert(sizeof(GoalSeekingConfig) == 6 * sizeof(double));
 static_assert(sizeof(CollisionAvoidanceConfig) == sizeof(LaserObstacleMapConfig) + sizeof(CandidateConfig) +

@@ -22,6 +22,7 @@ void describe(V& v, LaserObstacleMapConfig& c) {
   v.field("clamp_log_odds", c.clampLogOdds);
   v.field("occupied_log_odds", c.occupiedLogOdds);
   v.field("free_log_odds", c.freeLogOdds);
+  v.field("moving_memory_s", c.movingMemoryS);
 }
 
 template <class V>

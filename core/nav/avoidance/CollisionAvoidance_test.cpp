@@ -3,7 +3,8 @@
 // it drives, goes around a box on its path, and reports blocked once walled in for
 // blocked_wait_s, and leaves a room by its door when the path's later part (the hallway) lies
 // just behind the wall it faces, keeps the target of a door it drove by (it turns back to it), and
-// gets away from a wall it braked into, and drives again when stopped short of the goal.
+// gets away from a wall it braked into, drives again when stopped short of the goal, and passes a
+// person (a moving obstacle) slower than a post in the same place.
 #include <cppunit/extensions/HelperMacros.h>
 
 #include <cmath>
@@ -22,7 +23,7 @@ struct Box {
   double x0, y0, x1, y1;
 };
 ObstacleGrid gridWith(const std::vector<Box>& boxes, Timestamp stamp) {
-  ObstacleGrid grid{"test", stamp, OccupancyGrid(200, 200, 0.05, {-5.0, -5.0}, Cell::Free)};
+  ObstacleGrid grid{"test", stamp, OccupancyGrid(200, 200, 0.05, {-5.0, -5.0}, Cell::Free), {}};
   for (const Box& b : boxes)
     for (double x = b.x0 + 0.025; x < b.x1; x += 0.05)
       for (double y = b.y0 + 0.025; y < b.y1; y += 0.05) grid.cells.set(*grid.cells.cellOf({x, y}), Cell::Occupied);
@@ -69,6 +70,7 @@ class CollisionAvoidanceTest : public CppUnit::TestFixture {
   CPPUNIT_TEST(keepsTheDoorTargetItDroveBy);
   CPPUNIT_TEST(getsAwayFromTheWallItStandsAgainst);
   CPPUNIT_TEST(drivesAgainWhenStoppedShortOfTheGoal);
+  CPPUNIT_TEST(passesAWalkingPersonSlowly);
   CPPUNIT_TEST_SUITE_END();
 
  public:
@@ -197,6 +199,27 @@ class CollisionAvoidanceTest : public CppUnit::TestFixture {
     const AvoidanceDecision again = cam.update(later, std::span(&free_, 1));
     CPPUNIT_ASSERT(again.action == AvoidanceAction::Drive);
     CPPUNIT_ASSERT_DOUBLES_EQUAL(2.0, again.chain->chain.end().x, 1e-3);
+  }
+
+  void passesAWalkingPersonSlowly() {
+    // Something 0.5 m wide beside the path 2.5 m ahead, clear of the robot's way.
+    ObstacleGrid beside = gridWith({{2.25, 0.6, 2.75, 1.1}}, 0.0);
+    const auto topSpeed = [&](const ObstacleGrid& grid) {
+      CollisionAvoidance cam({}, kJackal, limits_);
+      cam.setTargets(straightTargets(4.0));
+      const AvoidanceDecision d = cam.update({0.0, {}, 0.0, 0.0}, std::span(&grid, 1));
+      CPPUNIT_ASSERT(d.action == AvoidanceAction::Drive);
+      CPPUNIT_ASSERT_DOUBLES_EQUAL(4.0, d.chain->chain.end().x, 1e-3);
+      double top = 0.0;
+      for (double s = 0.0; s < d.chain->chain.length(); s += 0.05)
+        top = std::max(top, TimedTrajectory(d.chain->chain, limits_, 0.0, 0.0, d.chain->cruiseOrUnlimited()).speedAt(s));
+      return top;
+    };
+    const double post = topSpeed(beside);
+    beside.moving = beside.cells;  // now it is a person
+    const double person = topSpeed(beside);
+    CPPUNIT_ASSERT(post > 0.95);
+    CPPUNIT_ASSERT(person < 0.7);
   }
 
   void keepsTheDoorTargetItDroveBy() {

@@ -3,8 +3,10 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <opencv2/imgproc.hpp>
 #include <string>
+#include <vector>
 
 #include "core/common/Errors.h"
 #include "core/common/ValueChecks.h"
@@ -14,6 +16,13 @@ namespace rgnav {
 namespace {
 constexpr std::uint8_t kPassed = 1;
 constexpr std::uint8_t kHit = 2;
+constexpr double kNeverFree = -std::numeric_limits<double>::infinity();
+// A beam is evidence that a cell is free (for the moving layer) only this far short of its end: a
+// beam grazing a wall passes the cells of the wall's face just before it ends (within 5 cm of the
+// face for at most 0.4 m where the wall is within the clearing range of 8 m at 1 m distance).
+constexpr double kFreeEvidenceShortM = 0.5;
+// A moving obstacle shows at least this many fresh cells (a person, 0.5 m across, some ten at 5 cm).
+constexpr int kMinMovingCells = 4;
 }  // namespace
 
 void validate(const LaserObstacleMapConfig& c) {
@@ -24,6 +33,7 @@ void validate(const LaserObstacleMapConfig& c) {
   positive(c.hitLogOdds, "hit_log_odds");
   positive(c.clampLogOdds, "clamp_log_odds");
   positive(c.occupiedLogOdds, "occupied_log_odds");
+  positive(c.movingMemoryS, "moving_memory_s");
   if (!(c.missLogOdds < 0.0)) throw ConfigError("laser obstacle map: miss_log_odds must be negative");
   if (!(c.freeLogOdds < 0.0)) throw ConfigError("laser obstacle map: free_log_odds must be negative");
   if (!(c.recenterMarginM >= 0.0) || c.recenterMarginM >= c.sizeM / 2.0)
@@ -37,6 +47,20 @@ LaserObstacleMap::LaserObstacleMap(const LaserObstacleMapConfig& config) : confi
   const int side = static_cast<int>(std::ceil(config.sizeM / config.resolutionM));
   logOdds_ = cv::Mat::zeros(side, side, CV_32F);
   mask_ = cv::Mat::zeros(side, side, CV_8U);
+  evidence_ = cv::Mat::zeros(side, side, CV_8U);
+  seenFree_ = cv::Mat(side, side, CV_64F, cv::Scalar(kNeverFree));
+}
+
+cv::Mat LaserObstacleMap::shifted(const cv::Mat& grid, int dx, int dy, double fill) {
+  cv::Mat out(grid.size(), grid.type(), cv::Scalar(fill));
+  const int n = grid.cols;
+  const int w = n - std::abs(dx), h = n - std::abs(dy);
+  if (w > 0 && h > 0) {
+    const cv::Rect from(std::max(dx, 0), std::max(dy, 0), w, h);
+    const cv::Rect to(std::max(-dx, 0), std::max(-dy, 0), w, h);
+    grid(from).copyTo(out(to));
+  }
+  return out;
 }
 
 cv::Point LaserObstacleMap::cellOf(double x, double y) const {
@@ -58,15 +82,8 @@ void LaserObstacleMap::centreOn(WorldPoint p) {
   // Shift by whole cells so that kept cells keep their values exactly.
   const int dx = static_cast<int>(std::lround((rx - half) / config_.resolutionM));
   const int dy = static_cast<int>(std::lround((ry - half) / config_.resolutionM));
-  cv::Mat shifted = cv::Mat::zeros(logOdds_.size(), logOdds_.type());
-  const int n = logOdds_.cols;
-  const int w = n - std::abs(dx), h = n - std::abs(dy);
-  if (w > 0 && h > 0) {
-    const cv::Rect from(std::max(dx, 0), std::max(dy, 0), w, h);
-    const cv::Rect to(std::max(-dx, 0), std::max(-dy, 0), w, h);
-    logOdds_(from).copyTo(shifted(to));
-  }
-  logOdds_ = shifted;
+  logOdds_ = shifted(logOdds_, dx, dy, 0.0);
+  seenFree_ = shifted(seenFree_, dx, dy, kNeverFree);
   origin_ = {origin_.x + dx * config_.resolutionM, origin_.y + dy * config_.resolutionM};
 }
 
@@ -75,6 +92,7 @@ void LaserObstacleMap::add(const LaserScan& scan) {
   centreOn({laser.x, laser.y});
   stamp_ = scan.stamp;
   mask_.setTo(0);
+  evidence_.setTo(0);
   const cv::Point from = cellOf(laser.x, laser.y);
   const double clearRange = std::min(config_.maxClearRangeM, scan.maxRange > 0.0 ? scan.maxRange : config_.maxClearRangeM);
   const cv::Rect inside(0, 0, mask_.cols, mask_.rows);
@@ -87,6 +105,8 @@ void LaserObstacleMap::add(const LaserScan& scan) {
     // A beam clears up to one cell short of its end: a grazing beam must not erase the obstacle.
     const double clear = hit ? std::max(0.0, r - config_.resolutionM) : clearRange;
     cv::line(mask_, from, cellOf(laser.x + c * clear, laser.y + s * clear), cv::Scalar(kPassed));
+    const double evident = std::min(clear, (std::isfinite(r) ? r : clearRange) - kFreeEvidenceShortM);
+    if (evident > 0.0) cv::line(evidence_, from, cellOf(laser.x + c * evident, laser.y + s * evident), cv::Scalar(1));
     if (hit) {
       const cv::Point end = cellOf(laser.x + c * r, laser.y + s * r);
       if (inside.contains(end)) mask_.at<std::uint8_t>(end) = kHit;
@@ -95,12 +115,16 @@ void LaserObstacleMap::add(const LaserScan& scan) {
   const auto hitOdds = static_cast<float>(config_.hitLogOdds);
   const auto missOdds = static_cast<float>(config_.missLogOdds);
   const auto clamp = static_cast<float>(config_.clampLogOdds);
+  const auto free = static_cast<float>(config_.freeLogOdds);
   for (int row = 0; row < mask_.rows; ++row) {
     const auto* m = mask_.ptr<std::uint8_t>(row);
     auto* l = logOdds_.ptr<float>(row);
+    const auto* e = evidence_.ptr<std::uint8_t>(row);
+    auto* seen = seenFree_.ptr<double>(row);
     for (int col = 0; col < mask_.cols; ++col) {
       if (m[col] == 0) continue;
       l[col] = std::clamp(l[col] + (m[col] == kHit ? hitOdds : missOdds), -clamp, clamp);
+      if (l[col] < free && e[col] && m[col] != kHit) seen[col] = scan.stamp;
     }
   }
 }
@@ -111,15 +135,41 @@ ObstacleGrid LaserObstacleMap::grid() const {
   out.stamp = stamp_;
   if (!started_) return out;
   out.cells = OccupancyGrid(logOdds_.cols, logOdds_.rows, config_.resolutionM, origin_, Cell::Unknown);
+  out.moving = OccupancyGrid(logOdds_.cols, logOdds_.rows, config_.resolutionM, origin_, Cell::Free);
   const auto occupied = static_cast<float>(config_.occupiedLogOdds);
   const auto free = static_cast<float>(config_.freeLogOdds);
+  const double movingSince = stamp_ - config_.movingMemoryS;
+  cv::Mat fresh = cv::Mat::zeros(logOdds_.size(), CV_8U);   // occupied, seen free lately
+  cv::Mat standing = cv::Mat::zeros(logOdds_.size(), CV_8U);  // occupied for longer
   for (int row = 0; row < logOdds_.rows; ++row) {
     const auto* l = logOdds_.ptr<float>(row);
+    const auto* seen = seenFree_.ptr<double>(row);
     for (int col = 0; col < logOdds_.cols; ++col) {
-      if (l[col] > occupied) out.cells.set({col, row}, Cell::Occupied);
-      else if (l[col] < free) out.cells.set({col, row}, Cell::Free);
+      if (l[col] > occupied) {
+        out.cells.set({col, row}, Cell::Occupied);
+        (seen[col] >= movingSince ? fresh : standing).at<std::uint8_t>(row, col) = 1;
+      } else if (l[col] < free) {
+        out.cells.set({col, row}, Cell::Free);
+      }
     }
   }
+  // A fresh cell beside a standing one is the edge of a wall that grazing beams had cleared, and a
+  // few fresh cells alone a corner or a door jamb that beams passed close by; a person walking into
+  // free space is a group of fresh cells (cells a cell apart count as one group).
+  cv::Mat nearStanding;
+  cv::dilate(standing, nearStanding, cv::Mat::ones(3, 3, CV_8U));
+  fresh.setTo(0, nearStanding);
+  cv::Mat grouped, labels;
+  cv::dilate(fresh, grouped, cv::Mat::ones(3, 3, CV_8U));
+  const int groups = cv::connectedComponents(grouped, labels, 8, CV_32S);
+  std::vector<int> members(static_cast<std::size_t>(groups), 0);
+  for (int row = 0; row < fresh.rows; ++row)
+    for (int col = 0; col < fresh.cols; ++col)
+      if (fresh.at<std::uint8_t>(row, col)) ++members[static_cast<std::size_t>(labels.at<int>(row, col))];
+  for (int row = 0; row < fresh.rows; ++row)
+    for (int col = 0; col < fresh.cols; ++col)
+      if (fresh.at<std::uint8_t>(row, col) && members[static_cast<std::size_t>(labels.at<int>(row, col))] >= kMinMovingCells)
+        out.moving.set({col, row}, Cell::Occupied);
   return out;
 }
 

@@ -4,7 +4,11 @@
 // cell its beams pass through (cv::line into a per-scan mask, so a cell counts once per scan)
 // and raises those its beams end in, both clamped, so a person's trail is cleared within a few
 // scans while a static obstacle stays. The grid scrolls in whole cells to keep the robot away from
-// its border. Unlike the thesis' 3D stereo fusion (5.5.3) there is one sensor and one layer.
+// its border. An obstacle in a cell that beams passed well short of their ends within
+// movingMemoryS, and that lies next to no obstacle older than that, is a moving one (a person
+// walking into free space; a wall's face is only passed by beams about to end on it): the grid's
+// moving layer. Unlike the
+// thesis' 3D stereo fusion (5.5.3) there is one sensor.
 #pragma once
 
 #include <opencv2/core.hpp>
@@ -25,6 +29,7 @@ struct LaserObstacleMapConfig {
   double clampLogOdds = 2.0;        // log-odds stay within +-this
   double occupiedLogOdds = 0.5;     // above: Occupied
   double freeLogOdds = -0.3;        // below: Free; between: Unknown
+  double movingMemoryS = 2.0;       // an obstacle in a cell seen Free this recently moves
 };
 
 // Throws ConfigError naming the first bad value.
@@ -41,11 +46,14 @@ class LaserObstacleMap {
 
  private:
   void centreOn(WorldPoint p);
+  static cv::Mat shifted(const cv::Mat& grid, int dx, int dy, double fill);
   cv::Point cellOf(double x, double y) const;
 
   LaserObstacleMapConfig config_;
   cv::Mat logOdds_;  // CV_32F, row 0 = lowest y
   cv::Mat mask_;     // CV_8U per scan: 1 passed, 2 hit
+  cv::Mat evidence_; // CV_8U per scan: 1 passed well short of the beam's end
+  cv::Mat seenFree_; // CV_64F: the stamp of the last scan after which the cell was Free
   WorldPoint origin_;
   Timestamp stamp_ = 0.0;
   bool started_ = false;

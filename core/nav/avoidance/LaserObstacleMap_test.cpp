@@ -1,5 +1,7 @@
 // Tests the laser obstacle grid: hits become obstacles, a moving person's trail is cleared by the
-// beams that later pass through it while a wall stays, and scrolling keeps what was seen.
+// beams that later pass through it while a wall stays, a person stepping into free space is a
+// moving obstacle and the wall is not (until the person stood for the memory), and scrolling keeps
+// what was seen.
 #include <cppunit/extensions/HelperMacros.h>
 
 #include <cmath>
@@ -41,6 +43,7 @@ class LaserObstacleMapTest : public CppUnit::TestFixture {
   CPPUNIT_TEST_SUITE(LaserObstacleMapTest);
   CPPUNIT_TEST(hitsAreObstaclesAndBeamsClear);
   CPPUNIT_TEST(aPersonsTrailIsCleared);
+  CPPUNIT_TEST(aPersonSteppingIntoFreeSpaceMoves);
   CPPUNIT_TEST(scrollingKeepsWhatWasSeen);
   CPPUNIT_TEST_SUITE_END();
 
@@ -69,6 +72,24 @@ class LaserObstacleMapTest : public CppUnit::TestFixture {
     const ObstacleGrid grid = map.grid();
     CPPUNIT_ASSERT(cellAt(grid, 0.01, 2.01) == Cell::Free);
     CPPUNIT_ASSERT(cellAt(grid, 0.01, 5.01) == Cell::Occupied);
+  }
+
+  void aPersonSteppingIntoFreeSpaceMoves() {
+    LaserObstacleMap map({});
+    const auto wall = [](double a) { return wallRange(a, 5.0); };
+    const auto withPerson = [](double a) { return std::abs(a - M_PI / 2) < 0.12 ? 2.0f : wallRange(a, 5.0); };
+    for (int i = 0; i < 5; ++i) map.add(scanAt({0, 0, M_PI / 2}, i * 0.1, wall));
+    for (int i = 5; i < 8; ++i) map.add(scanAt({0, 0, M_PI / 2}, i * 0.1, withPerson));
+    const ObstacleGrid grid = map.grid();
+    const auto moving = [](const ObstacleGrid& g, double x, double y) { return g.moving.at(*g.moving.cellOf({x, y})); };
+    CPPUNIT_ASSERT(cellAt(grid, 0.01, 2.01) == Cell::Occupied);
+    CPPUNIT_ASSERT(moving(grid, 0.01, 2.01) == Cell::Occupied);
+    CPPUNIT_ASSERT(cellAt(grid, 0.01, 5.01) == Cell::Occupied);
+    CPPUNIT_ASSERT(moving(grid, 0.01, 5.01) == Cell::Free);
+    // Standing there for longer than the memory (2 s): an obstacle like any other.
+    for (int i = 8; i < 40; ++i) map.add(scanAt({0, 0, M_PI / 2}, i * 0.1, withPerson));
+    CPPUNIT_ASSERT(moving(map.grid(), 0.01, 2.01) == Cell::Free);
+    CPPUNIT_ASSERT(cellAt(map.grid(), 0.01, 2.01) == Cell::Occupied);
   }
 
   void scrollingKeepsWhatWasSeen() {

@@ -14,5 +14,7 @@ namespace rgnav {
 // On the geometry of the first grid (the others' obstacle cells are mapped by their centres).
 // InvalidArgumentError for no grids or an empty first grid.
 OccupancyGrid fuseObstacles(std::span<const ObstacleGrid> grids);
+// The same for the moving obstacles (grids that do not tell them add none).
+OccupancyGrid fuseMovingObstacles(std::span<const ObstacleGrid> grids);
 
 }  // namespace rgnav

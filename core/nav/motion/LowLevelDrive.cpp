@@ -89,10 +89,10 @@ void LowLevelDrive::setChain(const DriveChain& chain) {
 
 TimedTrajectory LowLevelDrive::timedWithMargin(const DriveChain& chain) const {
   try {
-    return TimedTrajectory(chain.chain, referenceLimits(config_), chain.startSpeed, 0.0);
+    return TimedTrajectory(chain.chain, referenceLimits(config_), chain.startSpeed, 0.0, chain.cruiseOrUnlimited());
   } catch (const InvalidArgumentError&) {
     // A chain planned to the full limits (a stop just long enough) is driven without the margin.
-    return TimedTrajectory(chain.chain, config_.limits, chain.startSpeed, 0.0);
+    return TimedTrajectory(chain.chain, config_.limits, chain.startSpeed, 0.0, chain.cruiseOrUnlimited());
   }
 }
 

@@ -79,7 +79,7 @@ std::size_t intervalAt(const std::vector<double>& grid, double value) {
 
 TimedTrajectory::TimedTrajectory(TrajectoryChain chain, const MotionLimits& limits, double startSpeed,
                                  double endSpeed, double cruiseSpeed)
-    : chain_(std::move(chain)) {
+    : chain_(std::move(chain)), cruiseSpeed_(cruiseSpeed) {
   validate(limits);
   if (chain_.empty()) throw InvalidArgumentError("timed trajectory: empty chain");
   if (!(std::isfinite(startSpeed) && startSpeed >= 0.0 && std::isfinite(endSpeed) && endSpeed >= 0.0)) {

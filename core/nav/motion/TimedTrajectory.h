@@ -43,6 +43,7 @@ class TimedTrajectory {
   double duration() const;       // s: the predicted time to drive the chain
   double startSpeed() const;
   double endSpeed() const;
+  double cruiseSpeed() const { return cruiseSpeed_; }  // as given (infinite: none)
   // t in [0, duration()] (clamped): the reference at t seconds after the chain's start.
   ReferenceState stateAt(double t) const;
   // The time at which the reference reaches arc length s.
@@ -52,6 +53,7 @@ class TimedTrajectory {
 
  private:
   TrajectoryChain chain_;
+  double cruiseSpeed_ = std::numeric_limits<double>::infinity();
   std::vector<double> s_;  // profile grid
   std::vector<double> v_;  // speed at s_
   std::vector<double> t_;  // time at s_
