@@ -68,6 +68,32 @@ FramedQuadtree::FramedQuadtree(const OccupancyGrid& grid) : width_(grid.width())
     pending.push_back({s.col, s.row, half});
   }
   linkCellNeighbours(grid);
+  labelComponents();
+}
+
+// Components over quads: a quad's frame is joined within itself, so quads joined by a cell
+// neighbour link share a component.
+void FramedQuadtree::labelComponents() {
+  componentOfQuad_.assign(quads_.size(), kNone);
+  std::int32_t next = 0;
+  std::vector<std::int32_t> pending;
+  for (std::size_t seed = 0; seed < quads_.size(); ++seed) {
+    if (componentOfQuad_[seed] != kNone) continue;
+    componentOfQuad_[seed] = next;
+    pending.assign(1, static_cast<std::int32_t>(seed));
+    while (!pending.empty()) {
+      const Quad& q = quads_[static_cast<std::size_t>(pending.back())];
+      pending.pop_back();
+      for (std::int32_t node = q.firstNode; node < q.firstNode + q.nodeCount; ++node)
+        forEachCellNeighbour(node, [&](std::int32_t n) {
+          const std::int32_t quad = nodeQuad(n);
+          if (componentOfQuad_[static_cast<std::size_t>(quad)] != kNone) return;
+          componentOfQuad_[static_cast<std::size_t>(quad)] = next;
+          pending.push_back(quad);
+        });
+    }
+    ++next;
+  }
 }
 
 void FramedQuadtree::linkCellNeighbours(const OccupancyGrid& grid) {

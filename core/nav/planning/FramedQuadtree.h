@@ -44,6 +44,12 @@ class FramedQuadtree {
   CellIndex nodeCell(std::int32_t node) const { return nodeCells_[static_cast<std::size_t>(node)]; }
   std::int32_t nodeQuad(std::int32_t node) const { return nodeQuads_[static_cast<std::size_t>(node)]; }
   std::size_t freeCellCount() const { return freeCells_; }
+  // The connected part of the free space holding a cell: two cells share it iff a path of the
+  // graph joins them (a planner finds a path between them). kNone for a blocked or outside cell.
+  std::int32_t componentOf(CellIndex c) const {
+    const std::int32_t quad = quadOf(c);
+    return quad == kNone ? kNone : componentOfQuad_[static_cast<std::size_t>(quad)];
+  }
 
   // Calls visit(n) for every graph neighbour n of `node`: the rest of its quad's frame
   // (forEachFrameNeighbour) and its neighbouring cells in other quads (forEachCellNeighbour).
@@ -74,6 +80,7 @@ class FramedQuadtree {
   }
   void addQuad(int col, int row, int size);
   void linkCellNeighbours(const OccupancyGrid& grid);
+  void labelComponents();
 
   int width_ = 0;
   int height_ = 0;
@@ -85,6 +92,7 @@ class FramedQuadtree {
   std::vector<std::int32_t> nodeQuads_;
   std::vector<std::uint32_t> cellNeighbourStart_;  // per node and one more: its range in cellNeighbours_
   std::vector<std::int32_t> cellNeighbours_;
+  std::vector<std::int32_t> componentOfQuad_;
 };
 
 }  // namespace rgnav

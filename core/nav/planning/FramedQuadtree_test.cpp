@@ -1,9 +1,12 @@
 // Tests the framed-quadtree decomposition: on random grids the quads cover exactly the free cells,
 // are disjoint, free and inside the grid, and the graph nodes are exactly the frame cells of the
-// quads with contiguous ids per quad; a free power-of-two grid is one quad, a blocked cell splits it.
+// quads with contiguous ids per quad, and its components are those of a flood fill over the free
+// cells (8 neighbours, no diagonal squeeze between two blocked cells); a free power-of-two grid is
+// one quad, a blocked cell splits it.
 #include <cppunit/extensions/HelperMacros.h>
 
 #include <cstdlib>
+#include <map>
 #include <random>
 #include <set>
 
@@ -31,6 +34,7 @@ class FramedQuadtreeTest : public CppUnit::TestFixture {
   CPPUNIT_TEST(neighboursAreSymmetricAndAdjacent);
   CPPUNIT_TEST(aFreeSquareIsOneFramedQuad);
   CPPUNIT_TEST(aBlockedCellSplitsTheSquare);
+  CPPUNIT_TEST(componentsAreThoseOfAFloodFill);
   CPPUNIT_TEST_SUITE_END();
 
  public:
@@ -137,6 +141,61 @@ class FramedQuadtreeTest : public CppUnit::TestFixture {
     CPPUNIT_ASSERT_EQUAL(std::size_t{3 * 12 + 3 * 4 + 3}, tree.nodeCount());
     CPPUNIT_ASSERT_EQUAL(FramedQuadtree::kNone, tree.quadOf({0, 0}));
     CPPUNIT_ASSERT_EQUAL(4, tree.quads()[static_cast<std::size_t>(tree.quadOf({7, 7}))].size);
+  }
+
+  void componentsAreThoseOfAFloodFill() {
+    std::mt19937 rng(11);
+    std::size_t split = 0;
+    for (int trial = 0; trial < 30; ++trial) {
+      const OccupancyGrid grid = randomGrid(rng, 10 + trial, 30 - trial / 2, 0.2 + 0.01 * trial);
+      const FramedQuadtree tree(grid);
+      const std::vector<int> fill = floodFill(grid);
+      std::map<int, std::int32_t> toComponent;
+      std::set<std::int32_t> components;
+      for (int r = 0; r < grid.height(); ++r)
+        for (int c = 0; c < grid.width(); ++c) {
+          const std::int32_t component = tree.componentOf({c, r});
+          if (grid.blocked({c, r})) {
+            CPPUNIT_ASSERT_EQUAL(FramedQuadtree::kNone, component);
+            continue;
+          }
+          const int label = fill[static_cast<std::size_t>(r * grid.width() + c)];
+          const auto [it, added] = toComponent.emplace(label, component);
+          CPPUNIT_ASSERT_EQUAL(it->second, component);                        // one fill part, one component
+          CPPUNIT_ASSERT(!added || components.insert(component).second);  // and the other way round
+        }
+      split += components.size();
+    }
+    CPPUNIT_ASSERT(split > 60);  // the grids fall apart into many components
+  }
+
+ private:
+  // Labels per cell (-1 blocked): the parts of the free cells joined by steps to the 8 neighbours,
+  // a diagonal step not between two blocked cells.
+  static std::vector<int> floodFill(const OccupancyGrid& grid) {
+    std::vector<int> label(static_cast<std::size_t>(grid.width() * grid.height()), -1);
+    const auto at = [&](CellIndex c) -> int& { return label[static_cast<std::size_t>(c.row * grid.width() + c.col)]; };
+    int next = 0;
+    for (int r = 0; r < grid.height(); ++r)
+      for (int c = 0; c < grid.width(); ++c) {
+        if (grid.blocked({c, r}) || at({c, r}) >= 0) continue;
+        std::vector<CellIndex> pending{{c, r}};
+        at({c, r}) = next;
+        while (!pending.empty()) {
+          const CellIndex u = pending.back();
+          pending.pop_back();
+          for (int dy = -1; dy <= 1; ++dy)
+            for (int dx = -1; dx <= 1; ++dx) {
+              const CellIndex v{u.col + dx, u.row + dy};
+              if (grid.blocked(v) || at(v) >= 0) continue;
+              if (dx != 0 && dy != 0 && grid.blocked({u.col + dx, u.row}) && grid.blocked({u.col, u.row + dy})) continue;
+              at(v) = next;
+              pending.push_back(v);
+            }
+        }
+        ++next;
+      }
+    return label;
   }
 };
 

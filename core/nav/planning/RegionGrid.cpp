@@ -39,9 +39,10 @@ bool RegionGrid::freeAt(const Eigen::Vector2d& p) const {
   return cell && !grid.blocked(*cell);
 }
 
-std::optional<Eigen::Vector2d> RegionGrid::nearestFree(const Eigen::Vector2d& p, double maxDistanceM,
-                                                       bool overWalls) const {
-  if (freeAt(p)) return p;
+std::optional<Eigen::Vector2d> RegionGrid::nearestFree(const Eigen::Vector2d& p, double maxDistanceM, bool overWalls,
+                                                       const std::function<bool(CellIndex)>& usable) const {
+  const auto accepted = [&](CellIndex cell) { return !grid.blocked(cell) && (!usable || usable(cell)); };
+  if (const auto cell = grid.cellOf({p.x(), p.y()}); cell && accepted(*cell)) return p;
   const Eigen::Vector2d c = toCells(p);
   const int reach = static_cast<int>(std::ceil(maxDistanceM / grid.resolution()));
   const int col = static_cast<int>(std::floor(c.x())), row = static_cast<int>(std::floor(c.y()));
@@ -49,7 +50,7 @@ std::optional<Eigen::Vector2d> RegionGrid::nearestFree(const Eigen::Vector2d& p,
   double bestDistance = maxDistanceM;
   for (int r = row - reach; r <= row + reach; ++r)
     for (int k = col - reach; k <= col + reach; ++k) {
-      if (grid.blocked({k, r})) continue;
+      if (!accepted({k, r})) continue;
       const Eigen::Vector2d centre = toRegion({k + 0.5, r + 0.5});
       const double d = (centre - p).norm();
       if (d > bestDistance) continue;

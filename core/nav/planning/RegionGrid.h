@@ -8,6 +8,7 @@
 #pragma once
 
 #include <Eigen/Core>
+#include <functional>
 #include <optional>
 #include <vector>
 
@@ -29,9 +30,11 @@ struct RegionGrid {
   // when its cell is free. For points that lie just inside the inflation around walls (a crossing
   // point at a narrow door, a robot close to a wall): the hop is driven in a straight line.
   // `overWalls`: the hop may cross wall lines (a crossing point the robot drove through, whose
-  // door frame the line map may close a little).
+  // door frame the line map may close a little). `usable`, if given: only free cells it accepts
+  // count (the point itself too).
   std::optional<Eigen::Vector2d> nearestFree(const Eigen::Vector2d& regionPoint, double maxDistanceM,
-                                             bool overWalls = false) const;
+                                             bool overWalls = false,
+                                             const std::function<bool(CellIndex)>& usable = nullptr) const;
 };
 
 // Throws InvalidArgumentError for a non-positive resolution or a negative radius.

@@ -6,6 +6,7 @@
 #include <limits>
 #include <optional>
 #include <queue>
+#include <set>
 #include <sstream>
 
 #include "core/common/Errors.h"
@@ -52,6 +53,7 @@ struct RoutePlanner::RegionEntry {
   std::unique_ptr<FramedQuadtreePlanner> planner;
   std::map<std::size_t, std::optional<FramedQuadtreePlanner::Field>> fields;  // by route node
   std::map<std::size_t, std::optional<Eigen::Vector2d>> placements;          // by route node
+  std::optional<std::set<std::int32_t>> routeComponents;  // the planner's components holding a route node
 
   Eigen::Vector2d toRegion(const Eigen::Vector2d& mapPoint) const {
     return transformPoint(inverse(view->summary.frame), mapPoint);
@@ -60,12 +62,19 @@ struct RoutePlanner::RegionEntry {
     return transformPoint(view->summary.frame, regionPoint);
   }
   bool freeAt(const Eigen::Vector2d& mapPoint) const { return grid.freeAt(toRegion(mapPoint)); }
-  std::optional<Eigen::Vector2d> nearestFree(const Eigen::Vector2d& mapPoint, double maxM, bool overWalls = false) const {
-    const auto p = grid.nearestFree(toRegion(mapPoint), maxM, overWalls);
+  std::optional<Eigen::Vector2d> nearestFree(const Eigen::Vector2d& mapPoint, double maxM, bool overWalls = false,
+                                             const std::function<bool(CellIndex)>& usable = nullptr) const {
+    const auto p = grid.nearestFree(toRegion(mapPoint), maxM, overWalls, usable);
     if (!p) return std::nullopt;
     return toMap(*p);
   }
   Eigen::Vector2d cells(const Eigen::Vector2d& mapPoint) const { return grid.toCells(toRegion(mapPoint)); }
+  // The planner's component of the free cell a point lies in; none off the free cells.
+  std::optional<std::int32_t> componentAt(const Eigen::Vector2d& mapPoint) const {
+    const auto cell = freeCellAt(grid.grid, cells(mapPoint));
+    if (!cell) return std::nullopt;
+    return planner->tree().componentOf(*cell);
+  }
   // A planner's path in the map frame, its ends exactly `from` and `to`.
   Polyline inMap(const CellUnitPath& path, const Eigen::Vector2d& from, const Eigen::Vector2d& to) const {
     Polyline out;
@@ -127,27 +136,6 @@ std::vector<RegionId> RoutePlanner::regionsAt(const Eigen::Vector2d& point) cons
   for (const RegionView& r : map_.regions)
     if (entry(r.summary.id).freeAt(point)) out.push_back(r.summary.id);
   return out;
-}
-
-RoutePlanner::Ends RoutePlanner::startOf(const Pose2D& start) const {
-  const Eigen::Vector2d p(start.x, start.y);
-  if (!p.allFinite()) throw InvalidArgumentError("route planner: the start is not a finite point");
-  Ends ends{p, p, regionsAt(p), std::nullopt};
-  if (!ends.regions.empty()) return ends;
-  // Placed in the nearest region within startSnapM.
-  double best = kUnreachable;
-  for (const RegionView& r : map_.regions) {
-    const auto snapped = entry(r.summary.id).nearestFree(p, config_.startSnapM);
-    if (snapped && (*snapped - p).norm() < best) {
-      best = (*snapped - p).norm();
-      ends.point = *snapped;
-      ends.regions = {r.summary.id};
-    }
-  }
-  if (ends.regions.empty())
-    throw NoPathError("the start " + text(p) + " lies outside every region (none within " +
-                      std::to_string(config_.startSnapM) + " m)");
-  return ends;
 }
 
 RoutePlanner::Ends RoutePlanner::goalOf(const PlanGoal& goal, const Eigen::Vector2d& start) const {
@@ -299,9 +287,60 @@ const RoutePlanner::RouteGraph& RoutePlanner::routeGraph() const {
   return *routeGraph_;
 }
 
+std::optional<Eigen::Vector2d> RoutePlanner::placed(RegionEntry& r, std::size_t node) const {
+  const RouteGraph::Node& n = routeGraph().nodes[node];
+  if (!n.crossing) return n.position;
+  if (const auto it = r.placements.find(node); it != r.placements.end()) return it->second;
+  return r.placements.emplace(node, r.nearestFree(n.position, config_.crossingSnapM, true)).first->second;
+}
+
+bool RoutePlanner::leadsOn(RegionId region, std::optional<std::int32_t> component, const Ends& goal) const {
+  if (!component) return false;
+  RegionEntry& r = entry(region);
+  if (std::find(goal.regions.begin(), goal.regions.end(), region) != goal.regions.end() &&
+      r.componentAt(goal.point) == component)
+    return true;
+  if (!r.routeComponents) {
+    r.routeComponents.emplace();
+    if (const auto it = routeGraph().members.find(region); it != routeGraph().members.end())
+      for (std::size_t node : it->second)
+        if (const auto at = placed(r, node))
+          if (const auto c = r.componentAt(*at)) r.routeComponents->insert(*c);
+  }
+  return r.routeComponents->count(*component) > 0;
+}
+
+RoutePlanner::Ends RoutePlanner::startOf(const Pose2D& start, const Ends& goal) const {
+  const Eigen::Vector2d p(start.x, start.y);
+  if (!p.allFinite()) throw InvalidArgumentError("route planner: the start is not a finite point");
+  const std::vector<RegionId> in = regionsAt(p);
+  Ends ends{p, p, {}, std::nullopt};
+  for (RegionId r : in)
+    if (leadsOn(r, entry(r).componentAt(p), goal)) ends.regions.push_back(r);
+  if (!ends.regions.empty()) return ends;
+  // Placed on the nearest free cell within startSnapM that leads on.
+  double best = kUnreachable;
+  for (const RegionView& r : map_.regions) {
+    const RegionEntry& region = entry(r.summary.id);
+    const auto snapped = region.nearestFree(p, config_.startSnapM, false, [&](CellIndex cell) {
+      return leadsOn(r.summary.id, region.planner->tree().componentOf(cell), goal);
+    });
+    if (snapped && (*snapped - p).norm() < best) {
+      best = (*snapped - p).norm();
+      ends.point = *snapped;
+      ends.regions = {r.summary.id};
+    }
+  }
+  if (!ends.regions.empty()) return ends;
+  const std::string within = " (none within " + std::to_string(config_.startSnapM) + " m)";
+  if (in.empty()) throw NoPathError("the start " + text(p) + " lies outside every region" + within);
+  throw NoPathError("the start " + text(p) + " lies in free cells of region " + std::to_string(in.front().value()) +
+                    " cut off from its routes and the goal, and no free cell leads on" + within);
+}
+
 Plan RoutePlanner::plan(const Pose2D& startPose, const PlanGoal& goal) const {
-  const Ends start = startOf(startPose);
-  const Ends end = goalOf(goal, start.point);
+  const Ends end = goalOf(goal, {startPose.x, startPose.y});
+  const Ends start = startOf(startPose, end);
 
   // The route graph's nodes, then the start and the goal.
   const RouteGraph& graph = routeGraph();
@@ -314,15 +353,13 @@ Plan RoutePlanner::plan(const Pose2D& startPose, const PlanGoal& goal) const {
   // cell, at a narrow door, moves to the nearest free one); a link to a node costs what the
   // planner's field to that node says (one field per node and map revision, built on first use),
   // a link from the start to the goal in one region is planned directly.
-  const auto placed = [&](RegionEntry& r, std::size_t i) -> std::optional<Eigen::Vector2d> {
-    if (!nodes[i].crossing) return nodes[i].position;
-    if (const auto it = r.placements.find(i); it != r.placements.end()) return it->second;
-    return r.placements.emplace(i, r.nearestFree(nodes[i].position, config_.crossingSnapM, true)).first->second;
+  const auto placedNode = [&](RegionEntry& r, std::size_t i) -> std::optional<Eigen::Vector2d> {
+    return i < graph.nodes.size() ? placed(r, i) : nodes[i].position;
   };
   const auto fieldOf = [&](RegionEntry& r, std::size_t node) -> const std::optional<FramedQuadtreePlanner::Field>& {
     if (const auto it = r.fields.find(node); it != r.fields.end()) return it->second;
     std::optional<FramedQuadtreePlanner::Field> field;
-    if (const auto at = placed(r, node)) field = r.planner->fieldTo(r.cells(*at));
+    if (const auto at = placedNode(r, node)) field = r.planner->fieldTo(r.cells(*at));
     return r.fields.emplace(node, std::move(field)).first->second;
   };
   // The node a link's field leads to, and the link's other end (the goal's links use the field of
@@ -347,7 +384,7 @@ Plan RoutePlanner::plan(const Pose2D& startPose, const PlanGoal& goal) const {
     }
     const auto [target, from] = fieldEnds(a, b);
     const auto& field = fieldOf(r, target);
-    const auto point = placed(r, from);
+    const auto point = placedNode(r, from);
     if (!field || !point) return kUnreachable;
     return r.planner->costTo(*field, r.cells(*point)).value_or(kUnreachable) * r.grid.grid.resolution();
   };
@@ -355,7 +392,7 @@ Plan RoutePlanner::plan(const Pose2D& startPose, const PlanGoal& goal) const {
     RegionEntry& r = entry(region);
     if (a == s && b == g) return r.inMap(*directPath(region), start.point, end.point);
     const auto [target, from] = fieldEnds(a, b);
-    const Eigen::Vector2d fromAt = *placed(r, from), targetAt = *placed(r, target);
+    const Eigen::Vector2d fromAt = *placedNode(r, from), targetAt = *placedNode(r, target);
     Polyline path = r.inMap(r.planner->pathTo(*fieldOf(r, target), r.cells(fromAt)), fromAt, targetAt);
     if (nodes[from].crossing) path.insert(path.begin(), nodes[from].position);
     if (nodes[target].crossing) path.push_back(nodes[target].position);

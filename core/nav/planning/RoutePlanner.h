@@ -21,11 +21,17 @@
 //     links by lookups and reads only the chosen paths off the fields; only start and goal in one
 //     region are planned directly.
 // Goals: a point of the map frame, a region (by ID or name: its free point nearest the freespace
-// centroid), or a named object (a free pose in front of it, facing it). A start outside every
-// region is placed in the nearest region within `startSnapM`.
+// centroid), or a named object (a free pose in front of it, facing it).
+// Starts: the start lies in the regions in whose free cells it lies and from where it leads on,
+// i.e. whose planner reaches from it a route node of the region (a crossing point, an overlap
+// transfer, a passage end) or the goal. A start in no such place (outside every region, or in a
+// pocket of a region's free cells cut off from the rest by the inflation, where a robot pushed to
+// a wall corner can stand: a sliver of a region's freespace beyond its walls' ends) is placed on
+// the nearest free cell within `startSnapM` that leads on, in any region, not across a wall line.
 #pragma once
 
 #include <Eigen/Core>
+#include <cstdint>
 #include <map>
 #include <memory>
 #include <optional>
@@ -95,7 +101,8 @@ class RoutePlanner {
   const PlanningMap& map() const { return map_; }
 
   // Plans from `start` (map frame) to `goal`. Throws NoPathError (PlanningErrors.h) naming why:
-  // a start outside every region (beyond startSnapM), a goal outside every region or inside an
+  // a start outside every region or cut off in one (no free cell that leads on within
+  // startSnapM), a goal outside every region or inside an
   // obstacle, an unknown region or name, no route between the regions, no path inside a region.
   // InvalidArgumentError for a non-finite start or goal point.
   Plan plan(const Pose2D& start, const PlanGoal& goal) const;
@@ -134,7 +141,13 @@ class RoutePlanner {
   bool passageFree(const PassageEnd& a, const PassageEnd& b, const std::optional<Eigen::Vector2d>& middle) const;
   // The region's grid and planner, built on first use. Throws NoPathError for an unknown region.
   RegionEntry& entry(RegionId region) const;
-  Ends startOf(const Pose2D& start) const;
+  // A route node's point placed on a free cell of the region (a crossing point moves at most
+  // crossingSnapM, over wall lines; none if no free cell is that near). Cached per region entry.
+  std::optional<Eigen::Vector2d> placed(RegionEntry& region, std::size_t node) const;
+  // Whether a component of the region's free cells (none: off them) holds one of the region's
+  // route nodes or the goal: a start there leads on.
+  bool leadsOn(RegionId region, std::optional<std::int32_t> component, const Ends& goal) const;
+  Ends startOf(const Pose2D& start, const Ends& goal) const;
   Ends goalOf(const PlanGoal& goal, const Eigen::Vector2d& start) const;
 
   RoutePlannerConfig config_;

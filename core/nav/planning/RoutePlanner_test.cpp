@@ -2,13 +2,15 @@
 // (ExportedFloor.h): a route from the hallway into a room passes the room's door through its
 // middle, and its targets are spaced and labelled; goals by region ID, region name and object
 // name; typed refusals for goals outside the map or in an obstacle and for far starts; a start
-// just outside the map is placed in it; a gateway outside the RG graph joins its regions, but not
-// through a wall.
+// just outside the map is placed in it, and a start in a pocket of free cells cut off from the rest
+// is placed where it leads on; a gateway outside the RG graph joins its regions, but not through a
+// wall.
 #include <cppunit/extensions/HelperMacros.h>
 
 #include <algorithm>
 #include <cmath>
 
+#include "core/lines/ScanPoints.h"
 #include "core/nav/grid/PlanningErrors.h"
 #include "core/nav/planning/CellPoints.h"
 #include "core/nav/planning/KernelPlanningMap.h"
@@ -31,6 +33,7 @@ class RoutePlannerTest : public CppUnit::TestFixture {
   CPPUNIT_TEST(anObjectGoalFacesTheObject);
   CPPUNIT_TEST(badGoalsAndStartsAreTypedNoPath);
   CPPUNIT_TEST(aStartJustOutsideIsPlacedInTheNearestRegion);
+  CPPUNIT_TEST(aStartInACutOffPocketIsPlacedWhereItLeadsOn);
   CPPUNIT_TEST(aGatewayWithAnUnknownSideStillJoinsItsRegions);
   CPPUNIT_TEST(noPassageThroughAWall);
   CPPUNIT_TEST_SUITE_END();
@@ -169,6 +172,41 @@ class RoutePlannerTest : public CppUnit::TestFixture {
     const double hop = (plan.path[1] - Vector2d(1.0, 0.1)).norm();
     CPPUNIT_ASSERT(hop > 0.0 && hop < 0.3);
     assertNoPath({1.0, -0.3, 0.0}, PlanGoal::at({3.0, 1.0}), "outside every region");
+  }
+
+  // The hallway's line map with a 0.8 m box of walls around (5, 1), open by 0.3 m to the west: the
+  // box's middle is free (0.4 m from its walls), but the inflation closes the gap, so no path
+  // leaves it (as where a robot pushed into a wall corner stands on a sliver of a region's free
+  // cells). The start there is placed on the nearest cell that leads on, straight out through the
+  // gap; a goal in the same pocket is planned to directly.
+  void aStartInACutOffPocketIsPlacedWhereItLeadsOn() {
+    const Vector2d pocket(5.0, 1.0);
+    rgnav::PlanningMap map = rgnav::planningMapOf(*kernel_);
+    const std::vector<RegionId> in = planner_.regionsAt(pocket);
+    CPPUNIT_ASSERT_EQUAL(std::size_t(1), in.size());
+    const std::vector<std::pair<Vector2d, Vector2d>> box{{{4.6, 0.6}, {5.4, 0.6}},  {{5.4, 0.6}, {5.4, 1.4}},
+                                                         {{5.4, 1.4}, {4.6, 1.4}},  {{4.6, 1.4}, {4.6, 1.15}},
+                                                         {{4.6, 0.85}, {4.6, 0.6}}};
+    for (auto& region : map.regions)
+      if (region.summary.id == in.front()) {
+        const Pose2D toRegion = rgnav::inverse(region.summary.frame);
+        for (const auto& [a, b] : box)
+          region.lines.push_back({rgnav::transformPoint(toRegion, a), rgnav::transformPoint(toRegion, b)});
+      }
+    map.revision += 1;
+    planner_.setMap(map);
+    CPPUNIT_ASSERT(planner_.regionsAt(pocket) == in);  // free, in the hallway's free cells
+
+    const Plan plan = planner_.plan({pocket.x(), pocket.y(), 0.0}, PlanGoal::at({9.0, 4.5}));
+    CPPUNIT_ASSERT((plan.path.front() - pocket).norm() < 1e-12);
+    const Vector2d placed = plan.path[1];
+    CPPUNIT_ASSERT(placed.x() < 4.6);  // out through the gap, not over the box's walls
+    CPPUNIT_ASSERT(std::abs(placed.y() - 1.0) < 0.15);
+    CPPUNIT_ASSERT((placed - pocket).norm() < 1.0);
+
+    const Plan inside = planner_.plan({pocket.x(), pocket.y(), 0.0}, PlanGoal::at({5.05, 1.05}));
+    CPPUNIT_ASSERT((inside.path.front() - pocket).norm() < 1e-12);
+    CPPUNIT_ASSERT(inside.lengthM < 0.1);
   }
 
  private:
