@@ -21,8 +21,9 @@ constexpr double kNeverFree = -std::numeric_limits<double>::infinity();
 // beam grazing a wall passes the cells of the wall's face just before it ends (within 5 cm of the
 // face for at most 0.4 m where the wall is within the clearing range of 8 m at 1 m distance).
 constexpr double kFreeEvidenceShortM = 0.5;
-// A moving obstacle shows at least this many fresh cells (a person, 0.5 m across, some ten at 5 cm).
-constexpr int kMinMovingCells = 4;
+// A moving obstacle shows at least this many fresh cells (a person, 0.5 m across, some ten at 5 cm
+// nearby; single ones are corners and door jambs that beams passed close by).
+constexpr int kMinMovingCells = 2;
 }  // namespace
 
 void validate(const LaserObstacleMapConfig& c) {
@@ -143,9 +144,12 @@ ObstacleGrid LaserObstacleMap::grid() const {
   cv::Mat standing = cv::Mat::zeros(logOdds_.size(), CV_8U);  // occupied for longer
   for (int row = 0; row < logOdds_.rows; ++row) {
     const auto* l = logOdds_.ptr<float>(row);
+    const auto* m = mask_.ptr<std::uint8_t>(row);
     const auto* seen = seenFree_.ptr<double>(row);
     for (int col = 0; col < logOdds_.cols; ++col) {
-      if (l[col] > occupied) {
+      // The latest scan's hits are obstacles at once: a walking person crosses a cell faster than
+      // its log-odds climb from free to occupied.
+      if (l[col] > occupied || m[col] == kHit) {
         out.cells.set({col, row}, Cell::Occupied);
         (seen[col] >= movingSince ? fresh : standing).at<std::uint8_t>(row, col) = 1;
       } else if (l[col] < free) {
@@ -154,8 +158,8 @@ ObstacleGrid LaserObstacleMap::grid() const {
     }
   }
   // A fresh cell beside a standing one is the edge of a wall that grazing beams had cleared, and a
-  // few fresh cells alone a corner or a door jamb that beams passed close by; a person walking into
-  // free space is a group of fresh cells (cells a cell apart count as one group).
+  // fresh cell alone a corner or a door jamb that beams passed close by; a person walking into free
+  // space is a group of fresh cells (cells a cell apart count as one group).
   cv::Mat nearStanding;
   cv::dilate(standing, nearStanding, cv::Mat::ones(3, 3, CV_8U));
   fresh.setTo(0, nearStanding);
