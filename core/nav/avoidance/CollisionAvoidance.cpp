@@ -331,12 +331,12 @@ AvoidanceDecision CollisionAvoidance::wait(const RobotState& state, const PlanSt
       braking_ = true;
       return decision;
     }
-    if (start.state.speed >= kStandingSpeed) {
-      braking_ = true;
-      current_.reset();
-      currentTimed_.reset();
-      return {AvoidanceAction::Wait, std::nullopt, "no free chain: stop now", true};
-    }
+    // Too slow for a braking chain (the drive creeping to settle at the chain's end, where
+    // something now stands) or none could be timed: the drive stops at once.
+    braking_ = true;
+    current_.reset();
+    currentTimed_.reset();
+    return {AvoidanceAction::Wait, std::nullopt, "no free chain: stop now", true};
   }
   return {AvoidanceAction::Wait, std::nullopt, "no free chain"};
 }

@@ -56,7 +56,7 @@ struct AvoidanceDecision {
   AvoidanceAction action = AvoidanceAction::Keep;
   std::optional<DriveChain> chain;  // Drive; Wait when the robot must brake
   std::string reason;
-  bool stopNow = false;  // Wait: no braking chain could be timed; the caller stops the drive at once
+  bool stopNow = false;  // Wait: no braking chain (none timed, or the robot creeps): the caller stops the drive at once
 };
 
 class CollisionAvoidance {
