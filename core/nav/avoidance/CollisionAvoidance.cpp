@@ -43,8 +43,11 @@ constexpr double kTurnSlackM = 0.05;
 constexpr double kOffPathWeight = 2.0;
 // What cutting a chain short costs: a chain that reaches its end beats one that stops early.
 constexpr double kCutPenaltyS = 2.0;
-// From a scan to the drive acting on it: the scan period and the planning latency, s.
-constexpr double kReactionS = 0.2;
+// From a scan to the drive acting on it: the scan period, the planning latency and the drive's
+// command period and delay, s.
+constexpr double kReactionS = 0.3;
+// The slowest cruise speed, m/s: the robot as good as stands (a few millimetres a second).
+constexpr double kCrawlSpeed = 0.005;
 // A chain driven this much faster than the moving obstacles allow is replaced.
 constexpr double kSpeedSlackMps = 0.05;
 // Moving obstacles farther than this (clearance plus arc length) do not slow the robot, m: from
@@ -278,7 +281,7 @@ double CollisionAvoidance::oncomingStopSpeed(double gap) const {
   if (!std::isfinite(gap)) return std::numeric_limits<double>::infinity();
   const double a = limits_.maxDeceleration, u = config_.oncomingSpeedMps, L = kReactionS;
   const double b = u / a + L, c = u * L - gap;
-  return std::max(kStandingSpeed, a * (-b + std::sqrt(std::max(0.0, b * b - 2.0 * c / a))));
+  return std::max(kCrawlSpeed, a * (-b + std::sqrt(std::max(0.0, b * b - 2.0 * c / a))));
 }
 
 double CollisionAvoidance::brakingDistance(double speed) const {
