@@ -48,6 +48,10 @@ constexpr double kCutPenaltyS = 2.0;
 constexpr double kReactionS = 0.3;
 // The slowest cruise speed, m/s: the robot as good as stands (a few millimetres a second).
 constexpr double kCrawlSpeed = 0.005;
+// Held back by moving obstacles (its chains capped below kHeldSpeedMps) for longer than this, the
+// robot treats them as standing ones: people who do not pass, or obstacles taken for moving.
+constexpr double kHeldSpeedMps = 0.1;
+constexpr double kPeoplePatienceS = 5.0;
 // A chain driven this much faster than the moving obstacles allow is replaced.
 constexpr double kSpeedSlackMps = 0.05;
 // Moving obstacles farther than this (clearance plus arc length) do not slow the robot, m: from
@@ -355,6 +359,9 @@ AvoidanceDecision CollisionAvoidance::update(const RobotState& state, std::span<
   }
   const ObstacleClearance clearance(fuseObstacles(grids));
   const ObstacleClearance moving(fuseMovingObstacles(grids));
+  const bool patient = !heldSince_ || state.stamp - *heldSince_ < kPeoplePatienceS;
+  const ObstacleClearance none(OccupancyGrid(1, 1, clearance.obstacles().resolution(), clearance.obstacles().origin(), Cell::Free));
+  const ObstacleClearance& people = patient ? moving : none;
   const PlanStart start = planStart(state);
   dropPassedTargets(start.state.pose);
   const bool currentFree = currentStillFree(state, clearance);
@@ -367,7 +374,7 @@ AvoidanceDecision CollisionAvoidance::update(const RobotState& state, std::span<
   const bool tooFast = running && start.state.speed > kSpeedSlackMps +
                                                           oncomingStopSpeed(movingGap(sliceChain(current_->chain, start.onCurrent,
                                                                                                  current_->chain.length()),
-                                                                                      moving));
+                                                                                      people));
   if (currentFree && running && !refresh && !newTargets && !tooFast)
     return {AvoidanceAction::Keep, std::nullopt, "chain free"};
   // Arriving: the drive settles at the goal; a robot that stands short of it long after the chain's
@@ -376,12 +383,14 @@ AvoidanceDecision CollisionAvoidance::update(const RobotState& state, std::span<
                         state.stamp - current_->startTime < currentTimed_->duration() + kArrivalGraceS;
   if (currentFree && endsAtGoal && !newTargets && arriving) return {AvoidanceAction::Keep, std::nullopt, "arriving"};
 
-  auto best = bestCandidate(start, clearance, moving);
+  auto best = bestCandidate(start, clearance, people);
   if (!best) {
     if (currentFree && running) return {AvoidanceAction::Keep, std::nullopt, "no better chain"};
     return wait(state, start, currentFree && running);
   }
   waitingSince_.reset();
+  if (oncomingStopSpeed(movingGap(best->candidate.chain, moving)) >= kHeldSpeedMps) heldSince_.reset();
+  else if (!heldSince_) heldSince_ = state.stamp;
   return send(state, std::move(best->timed), AvoidanceAction::Drive,
               !currentFree ? "obstacle on the chain" : tooFast ? "people near the chain" : "replanned");
 }

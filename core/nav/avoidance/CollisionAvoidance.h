@@ -7,7 +7,8 @@
 //               (manoeuvres away from the path drive at most as fast as their tight turns can be
 //               entered, so the robot can still turn into a door it comes by; chains cut short
 //               by an obstacle, or passing moving ones (the grids' moving layer: people), slow
-//               enough to stop before they could reach the robot); it
+//               enough to stop before they could reach the robot; held back so for 5 s, the
+//               robot takes them for standing obstacles); it
 //               starts where the reference of the current chain will be one planning latency
 //               from now (startTime on the odometry clock) and ends at a standstill in checked
 //               free space, so the robot stops safely if this module dies;
@@ -126,6 +127,7 @@ class CollisionAvoidance {
   std::optional<Timestamp> waitingSince_;
   bool braking_ = false;  // the chain sent last brakes: no other until a free one
   bool escaping_ = false;  // blocked: the next chain may come as close as escapeMarginM
+  std::optional<Timestamp> heldSince_;  // since then moving obstacles hold the robot back
   std::uint64_t nextId_ = 1;
 };
 

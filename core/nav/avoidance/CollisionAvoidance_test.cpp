@@ -4,7 +4,8 @@
 // blocked_wait_s, and leaves a room by its door when the path's later part (the hallway) lies
 // just behind the wall it faces, keeps the target of a door it drove by (it turns back to it), and
 // gets away from a wall it braked into, drives again when stopped short of the goal, and passes a
-// person (a moving obstacle) slower than a post in the same place.
+// person (a moving obstacle) slower than a post in the same place, and after 5 s held back by one
+// who stays, takes it for standing.
 #include <cppunit/extensions/HelperMacros.h>
 
 #include <cmath>
@@ -71,6 +72,7 @@ class CollisionAvoidanceTest : public CppUnit::TestFixture {
   CPPUNIT_TEST(getsAwayFromTheWallItStandsAgainst);
   CPPUNIT_TEST(drivesAgainWhenStoppedShortOfTheGoal);
   CPPUNIT_TEST(passesAWalkingPersonSlowly);
+  CPPUNIT_TEST(takesAPersonWhoStaysForAStandingObstacle);
   CPPUNIT_TEST_SUITE_END();
 
  public:
@@ -220,6 +222,24 @@ class CollisionAvoidanceTest : public CppUnit::TestFixture {
     const double person = topSpeed(beside);
     CPPUNIT_ASSERT(post > 0.95);
     CPPUNIT_ASSERT(person < 0.7);
+  }
+
+  void takesAPersonWhoStaysForAStandingObstacle() {
+    // Something the grid calls moving, 0.3 m beside the path just ahead of the standing robot.
+    ObstacleGrid grid = gridWith({{0.4, 0.5, 0.9, 1.0}}, 0.0);
+    grid.moving = grid.cells;
+    CollisionAvoidance cam({}, kJackal, limits_);
+    cam.setTargets(straightTargets(4.0));
+    const AvoidanceDecision first = cam.update({0.0, {}, 0.0, 0.0}, std::span(&grid, 1));
+    CPPUNIT_ASSERT(first.chain);
+    CPPUNIT_ASSERT(first.chain->cruiseSpeed > 0.0 && first.chain->cruiseSpeed < 0.1);  // a crawl
+    // The robot crawls; the same grid for 6 s: then the obstacle counts as standing.
+    double cruise = first.chain->cruiseSpeed;
+    for (int i = 1; i <= 60; ++i) {
+      const AvoidanceDecision d = cam.update({0.1 * i, {}, 0.0, 0.0}, std::span(&grid, 1));
+      if (d.chain) cruise = d.chain->cruiseSpeed;
+    }
+    CPPUNIT_ASSERT(cruise == 0.0 || cruise > 0.5);
   }
 
   void keepsTheDoorTargetItDroveBy() {

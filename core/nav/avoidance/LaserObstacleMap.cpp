@@ -21,6 +21,13 @@ constexpr double kNeverFree = -std::numeric_limits<double>::infinity();
 // beam grazing a wall passes the cells of the wall's face just before it ends (within 5 cm of the
 // face for at most 0.4 m where the wall is within the clearing range of 8 m at 1 m distance).
 constexpr double kFreeEvidenceShortM = 0.5;
+// A moving obstacle, once seen, is followed: the young obstacle cells (occupied for less than the
+// memory) within this distance of cells it has left within kFollowS (moving then, seen free since
+// by beams well short of their ends) move too (a person walking away shows only cells it hid before, which were never seen free; a wall
+// taken for moving leaves no cell).
+constexpr double kFollowM = 0.3;
+constexpr double kFollowS = 0.3;
+constexpr double kNotOccupied = std::numeric_limits<double>::infinity();
 // A moving obstacle shows at least this many fresh cells (a person, 0.5 m across, some ten at 5 cm
 // nearby; single ones are corners and door jambs that beams passed close by).
 constexpr int kMinMovingCells = 2;
@@ -50,6 +57,9 @@ LaserObstacleMap::LaserObstacleMap(const LaserObstacleMapConfig& config) : confi
   mask_ = cv::Mat::zeros(side, side, CV_8U);
   evidence_ = cv::Mat::zeros(side, side, CV_8U);
   seenFree_ = cv::Mat(side, side, CV_64F, cv::Scalar(kNeverFree));
+  occupiedSince_ = cv::Mat(side, side, CV_64F, cv::Scalar(kNotOccupied));
+  movedAt_ = cv::Mat(side, side, CV_64F, cv::Scalar(kNeverFree));
+  moving_ = cv::Mat::zeros(side, side, CV_8U);
 }
 
 cv::Mat LaserObstacleMap::shifted(const cv::Mat& grid, int dx, int dy, double fill) {
@@ -85,6 +95,8 @@ void LaserObstacleMap::centreOn(WorldPoint p) {
   const int dy = static_cast<int>(std::lround((ry - half) / config_.resolutionM));
   logOdds_ = shifted(logOdds_, dx, dy, 0.0);
   seenFree_ = shifted(seenFree_, dx, dy, kNeverFree);
+  occupiedSince_ = shifted(occupiedSince_, dx, dy, kNotOccupied);
+  movedAt_ = shifted(movedAt_, dx, dy, kNeverFree);
   origin_ = {origin_.x + dx * config_.resolutionM, origin_.y + dy * config_.resolutionM};
 }
 
@@ -128,33 +140,32 @@ void LaserObstacleMap::add(const LaserScan& scan) {
       if (l[col] < free && e[col] && m[col] != kHit) seen[col] = scan.stamp;
     }
   }
+  findMoving();
 }
 
-ObstacleGrid LaserObstacleMap::grid() const {
-  ObstacleGrid out;
-  out.source = "laser";
-  out.stamp = stamp_;
-  if (!started_) return out;
-  out.cells = OccupancyGrid(logOdds_.cols, logOdds_.rows, config_.resolutionM, origin_, Cell::Unknown);
-  out.moving = OccupancyGrid(logOdds_.cols, logOdds_.rows, config_.resolutionM, origin_, Cell::Free);
-  const auto occupied = static_cast<float>(config_.occupiedLogOdds);
-  const auto free = static_cast<float>(config_.freeLogOdds);
-  const double movingSince = stamp_ - config_.movingMemoryS;
-  cv::Mat fresh = cv::Mat::zeros(logOdds_.size(), CV_8U);   // occupied, seen free lately
-  cv::Mat standing = cv::Mat::zeros(logOdds_.size(), CV_8U);  // occupied for longer
+bool LaserObstacleMap::occupiedAt(int row, int col) const {
+  return logOdds_.at<float>(row, col) > static_cast<float>(config_.occupiedLogOdds) || mask_.at<std::uint8_t>(row, col) == kHit;
+}
+
+void LaserObstacleMap::findMoving() {
+  const double since = stamp_ - config_.movingMemoryS;
+  cv::Mat fresh = cv::Mat::zeros(logOdds_.size(), CV_8U);     // occupied, seen free lately
+  cv::Mat standing = cv::Mat::zeros(logOdds_.size(), CV_8U);  // occupied, not seen free lately
+  cv::Mat young = cv::Mat::zeros(logOdds_.size(), CV_8U);     // occupied for less than the memory
+  cv::Mat vacated = cv::Mat::zeros(logOdds_.size(), CV_8U);   // moving within kFollowS, free now
   for (int row = 0; row < logOdds_.rows; ++row) {
-    const auto* l = logOdds_.ptr<float>(row);
-    const auto* m = mask_.ptr<std::uint8_t>(row);
     const auto* seen = seenFree_.ptr<double>(row);
+    auto* occupiedSince = occupiedSince_.ptr<double>(row);
+    const auto* movedAt = movedAt_.ptr<double>(row);
     for (int col = 0; col < logOdds_.cols; ++col) {
-      // The latest scan's hits are obstacles at once: a walking person crosses a cell faster than
-      // its log-odds climb from free to occupied.
-      if (l[col] > occupied || m[col] == kHit) {
-        out.cells.set({col, row}, Cell::Occupied);
-        (seen[col] >= movingSince ? fresh : standing).at<std::uint8_t>(row, col) = 1;
-      } else if (l[col] < free) {
-        out.cells.set({col, row}, Cell::Free);
+      if (!occupiedAt(row, col)) {
+        occupiedSince[col] = kNotOccupied;
+        vacated.at<std::uint8_t>(row, col) = movedAt[col] >= stamp_ - kFollowS && seen[col] >= stamp_ - kFollowS;
+        continue;
       }
+      occupiedSince[col] = std::min(occupiedSince[col], stamp_);
+      young.at<std::uint8_t>(row, col) = occupiedSince[col] >= since;
+      (seen[col] >= since ? fresh : standing).at<std::uint8_t>(row, col) = 1;
     }
   }
   // A fresh cell beside a standing one is the edge of a wall that grazing beams had cleared, and a
@@ -170,10 +181,41 @@ ObstacleGrid LaserObstacleMap::grid() const {
   for (int row = 0; row < fresh.rows; ++row)
     for (int col = 0; col < fresh.cols; ++col)
       if (fresh.at<std::uint8_t>(row, col)) ++members[static_cast<std::size_t>(labels.at<int>(row, col))];
+  const int reach = static_cast<int>(std::lround(kFollowM / config_.resolutionM));
+  cv::Mat followed;
+  cv::dilate(vacated, followed, cv::getStructuringElement(cv::MORPH_ELLIPSE, {2 * reach + 1, 2 * reach + 1}));
   for (int row = 0; row < fresh.rows; ++row)
-    for (int col = 0; col < fresh.cols; ++col)
-      if (fresh.at<std::uint8_t>(row, col) && members[static_cast<std::size_t>(labels.at<int>(row, col))] >= kMinMovingCells)
-        out.moving.set({col, row}, Cell::Occupied);
+    for (int col = 0; col < fresh.cols; ++col) {
+      const bool seenMoving =
+          fresh.at<std::uint8_t>(row, col) && members[static_cast<std::size_t>(labels.at<int>(row, col))] >= kMinMovingCells;
+      const bool follows = young.at<std::uint8_t>(row, col) && followed.at<std::uint8_t>(row, col);
+      moving_.at<std::uint8_t>(row, col) = seenMoving || follows;
+      if (seenMoving || follows) movedAt_.at<double>(row, col) = stamp_;
+    }
+}
+
+ObstacleGrid LaserObstacleMap::grid() const {
+  ObstacleGrid out;
+  out.source = "laser";
+  out.stamp = stamp_;
+  if (!started_) return out;
+  out.cells = OccupancyGrid(logOdds_.cols, logOdds_.rows, config_.resolutionM, origin_, Cell::Unknown);
+  out.moving = OccupancyGrid(logOdds_.cols, logOdds_.rows, config_.resolutionM, origin_, Cell::Free);
+  const auto free = static_cast<float>(config_.freeLogOdds);
+  for (int row = 0; row < logOdds_.rows; ++row) {
+    const auto* l = logOdds_.ptr<float>(row);
+    const auto* moving = moving_.ptr<std::uint8_t>(row);
+    for (int col = 0; col < logOdds_.cols; ++col) {
+      // The latest scan's hits are obstacles at once: a walking person crosses a cell faster than
+      // its log-odds climb from free to occupied.
+      if (occupiedAt(row, col)) {
+        out.cells.set({col, row}, Cell::Occupied);
+        if (moving[col]) out.moving.set({col, row}, Cell::Occupied);
+      } else if (l[col] < free) {
+        out.cells.set({col, row}, Cell::Free);
+      }
+    }
+  }
   return out;
 }
 

@@ -5,9 +5,10 @@
 // and raises those its beams end in, both clamped, so a person's trail is cleared within a few
 // scans while a static obstacle stays. The grid scrolls in whole cells to keep the robot away from
 // its border. An obstacle in a cell that beams passed well short of their ends within
-// movingMemoryS, and that lies next to no obstacle older than that, is a moving one (a person
-// walking into free space; a wall's face is only passed by beams about to end on it): the grid's
-// moving layer. Unlike the
+// movingMemoryS, in a group of such cells that lies next to no obstacle seen free longer ago, is a
+// moving one (a person walking into free space; a wall's face is only passed by beams about to end
+// on it); once seen, it is followed through the cells occupied for less than movingMemoryS next to
+// cells it has left (a person walking away shows only cells it hid before): the moving layer. Unlike the
 // thesis' 3D stereo fusion (5.5.3) there is one sensor.
 #pragma once
 
@@ -46,6 +47,8 @@ class LaserObstacleMap {
 
  private:
   void centreOn(WorldPoint p);
+  void findMoving();  // the moving layer after a scan
+  bool occupiedAt(int row, int col) const;
   static cv::Mat shifted(const cv::Mat& grid, int dx, int dy, double fill);
   cv::Point cellOf(double x, double y) const;
 
@@ -54,6 +57,9 @@ class LaserObstacleMap {
   cv::Mat mask_;     // CV_8U per scan: 1 passed, 2 hit
   cv::Mat evidence_; // CV_8U per scan: 1 passed well short of the beam's end
   cv::Mat seenFree_; // CV_64F: the stamp of the last scan after which the cell was Free
+  cv::Mat occupiedSince_;  // CV_64F: since when the cell is Occupied (infinite: it is not)
+  cv::Mat movedAt_;        // CV_64F: the last scan that found a moving obstacle in the cell
+  cv::Mat moving_;         // CV_8U: the moving layer after the latest scan
   WorldPoint origin_;
   Timestamp stamp_ = 0.0;
   bool started_ = false;
