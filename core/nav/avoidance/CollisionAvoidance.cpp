@@ -49,9 +49,11 @@ constexpr double kReactionS = 0.3;
 // The slowest cruise speed, m/s: the robot as good as stands (a few millimetres a second).
 constexpr double kCrawlSpeed = 0.005;
 // Held back by moving obstacles (its chains capped below kHeldSpeedMps) for longer than this, the
-// robot treats them as standing ones: people who do not pass, or obstacles taken for moving.
+// robot treats them as standing ones (people who do not pass, or obstacles taken for moving),
+// but for those nearer than kAlwaysHeldM.
 constexpr double kHeldSpeedMps = 0.1;
 constexpr double kPeoplePatienceS = 5.0;
+constexpr double kAlwaysHeldM = 0.5;
 // A chain driven this much faster than the moving obstacles allow is replaced.
 constexpr double kSpeedSlackMps = 0.05;
 // Moving obstacles farther than this (clearance plus arc length) do not slow the robot, m: from
@@ -229,9 +231,15 @@ double CollisionAvoidance::movingGap(const TrajectoryChain& chain, const Obstacl
   return best < kMovingReachM ? best : std::numeric_limits<double>::infinity();
 }
 
+double CollisionAvoidance::peopleCap(const TrajectoryChain& chain, const ObstacleClearance& moving, bool patient) const {
+  const double gap = movingGap(chain, moving);
+  return !patient && gap >= kAlwaysHeldM ? std::numeric_limits<double>::infinity() : oncomingStopSpeed(gap);
+}
+
 std::optional<CollisionAvoidance::Scored> CollisionAvoidance::bestCandidate(const PlanStart& start,
                                                                             const ObstacleClearance& clearance,
-                                                                            const ObstacleClearance& moving) const {
+                                                                            const ObstacleClearance& moving,
+                                                                            bool patient) const {
   std::optional<Scored> best;
   for (Candidate& candidate : candidatesFrom(start)) {
     const SweptCheck check = checkSwept(clearance, candidate.chain, footprint_, checkOptions());
@@ -251,7 +259,7 @@ std::optional<CollisionAvoidance::Scored> CollisionAvoidance::bestCandidate(cons
     // before they could reach it (a person walking towards the robot).
     const bool manoeuvre = candidate.kind == Candidate::Kind::Deviation || candidate.kind == Candidate::Kind::Fan;
     double cruise = std::min(manoeuvre ? manoeuvreSpeed() : std::numeric_limits<double>::infinity(),
-                             oncomingStopSpeed(movingGap(candidate.chain, moving)));
+                             peopleCap(candidate.chain, moving, patient));
     if (!check.clear) cruise = std::min(cruise, oncomingStopSpeed(check.freeLength));
     std::optional<TimedTrajectory> timed;
     try {
@@ -360,8 +368,6 @@ AvoidanceDecision CollisionAvoidance::update(const RobotState& state, std::span<
   const ObstacleClearance clearance(fuseObstacles(grids));
   const ObstacleClearance moving(fuseMovingObstacles(grids));
   const bool patient = !heldSince_ || state.stamp - *heldSince_ < kPeoplePatienceS;
-  const ObstacleClearance none(OccupancyGrid(1, 1, clearance.obstacles().resolution(), clearance.obstacles().origin(), Cell::Free));
-  const ObstacleClearance& people = patient ? moving : none;
   const PlanStart start = planStart(state);
   dropPassedTargets(start.state.pose);
   const bool currentFree = currentStillFree(state, clearance);
@@ -371,10 +377,9 @@ AvoidanceDecision CollisionAvoidance::update(const RobotState& state, std::span<
                        state.stamp - lastPlan_ >= kRefreshPeriodS;
   const bool newTargets = targetsChanged_ && (!running || state.stamp - lastPlan_ >= config_.replanPeriodS);
   // People near the chain ahead: the robot must be slow enough to stop before they could reach it.
-  const bool tooFast = running && start.state.speed > kSpeedSlackMps +
-                                                          oncomingStopSpeed(movingGap(sliceChain(current_->chain, start.onCurrent,
-                                                                                                 current_->chain.length()),
-                                                                                      people));
+  const bool tooFast =
+      running && start.state.speed > kSpeedSlackMps + peopleCap(sliceChain(current_->chain, start.onCurrent, current_->chain.length()),
+                                                                moving, patient);
   if (currentFree && running && !refresh && !newTargets && !tooFast)
     return {AvoidanceAction::Keep, std::nullopt, "chain free"};
   // Arriving: the drive settles at the goal; a robot that stands short of it long after the chain's
@@ -383,13 +388,13 @@ AvoidanceDecision CollisionAvoidance::update(const RobotState& state, std::span<
                         state.stamp - current_->startTime < currentTimed_->duration() + kArrivalGraceS;
   if (currentFree && endsAtGoal && !newTargets && arriving) return {AvoidanceAction::Keep, std::nullopt, "arriving"};
 
-  auto best = bestCandidate(start, clearance, people);
+  auto best = bestCandidate(start, clearance, moving, patient);
   if (!best) {
     if (currentFree && running) return {AvoidanceAction::Keep, std::nullopt, "no better chain"};
     return wait(state, start, currentFree && running);
   }
   waitingSince_.reset();
-  if (oncomingStopSpeed(movingGap(best->candidate.chain, moving)) >= kHeldSpeedMps) heldSince_.reset();
+  if (peopleCap(best->candidate.chain, moving, true) >= kHeldSpeedMps) heldSince_.reset();
   else if (!heldSince_) heldSince_ = state.stamp;
   return send(state, std::move(best->timed), AvoidanceAction::Drive,
               !currentFree ? "obstacle on the chain" : tooFast ? "people near the chain" : "replanned");

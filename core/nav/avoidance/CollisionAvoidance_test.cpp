@@ -5,7 +5,7 @@
 // just behind the wall it faces, keeps the target of a door it drove by (it turns back to it), and
 // gets away from a wall it braked into, drives again when stopped short of the goal, and passes a
 // person (a moving obstacle) slower than a post in the same place, and after 5 s held back by one
-// who stays, takes it for standing.
+// who stays (not too near), takes it for standing.
 #include <cppunit/extensions/HelperMacros.h>
 
 #include <cmath>
@@ -225,8 +225,8 @@ class CollisionAvoidanceTest : public CppUnit::TestFixture {
   }
 
   void takesAPersonWhoStaysForAStandingObstacle() {
-    // Something the grid calls moving, 0.3 m beside the path just ahead of the standing robot.
-    ObstacleGrid grid = gridWith({{0.4, 0.5, 0.9, 1.0}}, 0.0);
+    // Something the grid calls moving, 0.55 m beside the path just ahead of the standing robot.
+    ObstacleGrid grid = gridWith({{0.4, 0.77, 0.9, 1.27}}, 0.0);
     grid.moving = grid.cells;
     CollisionAvoidance cam({}, kJackal, limits_);
     cam.setTargets(straightTargets(4.0));
