@@ -49,11 +49,10 @@ constexpr double kReactionS = 0.3;
 // The slowest cruise speed, m/s: the robot as good as stands (a few millimetres a second).
 constexpr double kCrawlSpeed = 0.005;
 // Held back by moving obstacles (its chains capped below kHeldSpeedMps) for longer than this, the
-// robot treats them as standing ones (people who do not pass, or obstacles taken for moving),
-// but for those nearer than kAlwaysHeldM.
+// robot treats them as standing ones: people who do not pass, or obstacles taken for moving (a
+// wall's face beside the robot that far beams graze and near ones hit).
 constexpr double kHeldSpeedMps = 0.1;
 constexpr double kPeoplePatienceS = 5.0;
-constexpr double kAlwaysHeldM = 0.5;
 // A chain driven this much faster than the moving obstacles allow is replaced.
 constexpr double kSpeedSlackMps = 0.05;
 // Moving obstacles farther than this (clearance plus arc length) do not slow the robot, m: from
@@ -232,8 +231,7 @@ double CollisionAvoidance::movingGap(const TrajectoryChain& chain, const Obstacl
 }
 
 double CollisionAvoidance::peopleCap(const TrajectoryChain& chain, const ObstacleClearance& moving, bool patient) const {
-  const double gap = movingGap(chain, moving);
-  return !patient && gap >= kAlwaysHeldM ? std::numeric_limits<double>::infinity() : oncomingStopSpeed(gap);
+  return patient ? oncomingStopSpeed(movingGap(chain, moving)) : std::numeric_limits<double>::infinity();
 }
 
 std::optional<CollisionAvoidance::Scored> CollisionAvoidance::bestCandidate(const PlanStart& start,
@@ -380,7 +378,9 @@ AvoidanceDecision CollisionAvoidance::update(const RobotState& state, std::span<
   const bool tooFast =
       running && start.state.speed > kSpeedSlackMps + peopleCap(sliceChain(current_->chain, start.onCurrent, current_->chain.length()),
                                                                 moving, patient);
-  if (currentFree && running && !refresh && !newTargets && !tooFast)
+  // Out of patience: the crawl the people set is replaced.
+  const bool crawling = !patient && running && current_->cruiseSpeed > 0.0 && current_->cruiseSpeed < kHeldSpeedMps;
+  if (currentFree && running && !refresh && !newTargets && !tooFast && !crawling)
     return {AvoidanceAction::Keep, std::nullopt, "chain free"};
   // Arriving: the drive settles at the goal; a robot that stands short of it long after the chain's
   // time (something it cannot see stopped it, and the drive gave up) gets a new chain.
@@ -397,7 +397,10 @@ AvoidanceDecision CollisionAvoidance::update(const RobotState& state, std::span<
   if (peopleCap(best->candidate.chain, moving, true) >= kHeldSpeedMps) heldSince_.reset();
   else if (!heldSince_) heldSince_ = state.stamp;
   return send(state, std::move(best->timed), AvoidanceAction::Drive,
-              !currentFree ? "obstacle on the chain" : tooFast ? "people near the chain" : "replanned");
+              !currentFree ? "obstacle on the chain"
+              : tooFast    ? "people near the chain"
+              : crawling   ? "people do not pass"
+                           : "replanned");
 }
 
 }  // namespace rgnav

@@ -8,7 +8,7 @@
 //               entered, so the robot can still turn into a door it comes by; chains cut short
 //               by an obstacle, or passing moving ones (the grids' moving layer: people), slow
 //               enough to stop before they could reach the robot; held back so for 5 s, the
-//               robot takes those not within half a metre for standing obstacles); it
+//               robot takes them for standing obstacles); it
 //               starts where the reference of the current chain will be one planning latency
 //               from now (startTime on the odometry clock) and ends at a standstill in checked
 //               free space, so the robot stops safely if this module dies;
@@ -100,8 +100,7 @@ class CollisionAvoidance {
   std::vector<Candidate> candidatesFrom(const PlanStart& start) const;
   std::optional<Scored> bestCandidate(const PlanStart& start, const ObstacleClearance& clearance,
                                       const ObstacleClearance& moving, bool patient) const;
-  // The speed cap moving obstacles set on a chain (infinite: none); out of patience, only those
-  // nearer than half a metre count.
+  // The speed cap moving obstacles set on a chain (infinite: none, or out of patience).
   double peopleCap(const TrajectoryChain& chain, const ObstacleClearance& moving, bool patient) const;
   // How far moving obstacles are from the chain (clearance plus the arc length where it occurs;
   // infinite without moving obstacles).

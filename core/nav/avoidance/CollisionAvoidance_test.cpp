@@ -5,7 +5,7 @@
 // just behind the wall it faces, keeps the target of a door it drove by (it turns back to it), and
 // gets away from a wall it braked into, drives again when stopped short of the goal, and passes a
 // person (a moving obstacle) slower than a post in the same place, and after 5 s held back by one
-// who stays (not too near), takes it for standing.
+// who stays, takes it for standing.
 #include <cppunit/extensions/HelperMacros.h>
 
 #include <cmath>
