@@ -253,12 +253,12 @@ std::optional<CollisionAvoidance::Scored> CollisionAvoidance::bestCandidate(cons
     }
     // Manoeuvres (deviations and fans) drive no faster than their tight turns allow, so that the
     // robot can still turn tightly from anywhere on them (into the door it would otherwise pass);
-    // a chain cut short by an obstacle, or passing people, no faster than lets the robot stop
-    // before they could reach it (a person walking towards the robot).
+    // chains passing moving obstacles no faster than lets the robot stop before they could reach
+    // it (a person walking towards the robot). A standing obstacle that cuts a chain short only
+    // ends it (a cap for it too kept the robot crawling through every door).
     const bool manoeuvre = candidate.kind == Candidate::Kind::Deviation || candidate.kind == Candidate::Kind::Fan;
-    double cruise = std::min(manoeuvre ? manoeuvreSpeed() : std::numeric_limits<double>::infinity(),
-                             peopleCap(candidate.chain, moving, patient));
-    if (!check.clear) cruise = std::min(cruise, oncomingStopSpeed(check.freeLength));
+    const double cruise = std::min(manoeuvre ? manoeuvreSpeed() : std::numeric_limits<double>::infinity(),
+                                   peopleCap(candidate.chain, moving, patient));
     std::optional<TimedTrajectory> timed;
     try {
       timed.emplace(candidate.chain, limits_, start.state.speed, 0.0, cruise);

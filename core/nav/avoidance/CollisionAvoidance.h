@@ -5,10 +5,10 @@
 //   Drive       a new DriveChain: the best free candidate (ChainCandidates.h) scored by its
 //               predicted time, the path left from its end to the goal and its clearance
 //               (manoeuvres away from the path drive at most as fast as their tight turns can be
-//               entered, so the robot can still turn into a door it comes by; chains cut short
-//               by an obstacle, or passing moving ones (the grids' moving layer: people), slow
-//               enough to stop before they could reach the robot; held back so for 5 s, the
-//               robot takes them for standing obstacles); it
+//               entered, so the robot can still turn into a door it comes by; chains passing
+//               moving obstacles (the grids' moving layer: people) slow enough to stop before
+//               they could reach the robot; held back so for 5 s, the robot takes them for
+//               standing obstacles); it
 //               starts where the reference of the current chain will be one planning latency
 //               from now (startTime on the odometry clock) and ends at a standstill in checked
 //               free space, so the robot stops safely if this module dies;

@@ -43,8 +43,8 @@ struct CollisionAvoidanceConfig {
   GoalSeekingConfig goalSeeking;
   double safetyMarginM = 0.05;          // the swept footprint keeps this from obstacles
   double escapeMarginM = 0.01;          // ... for the one chain after a block
-  double oncomingSpeedMps = 1.2;        // what blocks a chain may come towards the robot this fast
-                                        // (people): it is driven slow enough to stop before it
+  double oncomingSpeedMps = 1.2;        // moving obstacles (people) may come towards the robot this
+                                        // fast: chains near them are slow enough to stop before
   double sampleStepM = 0.03;            // poses sampled along chains
   double comfortClearanceM = 0.3;       // chains closer than margin + this pay extra
   double clearanceWeightSPerM = 4.0;    // seconds of cost per metre of clearance below comfort
