@@ -56,7 +56,7 @@ constexpr double kPeoplePatienceS = 5.0;
 // A chain driven this much faster than the moving obstacles allow is replaced.
 constexpr double kSpeedSlackMps = 0.05;
 // Moving obstacles farther than this (clearance plus arc length) do not slow the robot, m: from
-// the top speed the robot stops within less (oncomingStopSpeed(6 m) is above 1.4 m/s at 0.5 m/s^2).
+// the top speed the robot stops within less (oncomingStopSpeed(6 m) is above 1.3 m/s at 0.5 m/s^2).
 constexpr double kMovingReachM = 6.0;
 
 double distance(const Pose2D& a, const Pose2D& b) { return std::hypot(a.x - b.x, a.y - b.y); }

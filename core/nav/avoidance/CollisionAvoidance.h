@@ -23,7 +23,7 @@
 // is cut back to such a pose (and driven if the robot can stop there): it closes in and sees more.
 // Deliberate differences to the thesis: no conic or elliptic segments (clothoids, arcs and
 // straights join every pair of poses), and moving obstacles are handled by re-checking at the
-// scan rate with a safety margin, not by predicting their motion.
+// scan rate with a safety margin and by the speed cap near them, not by predicting their motion.
 #pragma once
 
 #include <cstdint>
