@@ -186,25 +186,34 @@ RoutePlanner::Ends RoutePlanner::goalOf(const PlanGoal& goal, const Eigen::Vecto
 
 bool RoutePlanner::passageFree(const PassageEnd& a, const PassageEnd& b,
                                const std::optional<Eigen::Vector2d>& middle) const {
-  if (a.crossing == b.crossing) return (a.position - b.position).norm() == 0.0;
   // Every half cell along the line (through the door's middle) lies on a free cell of a region
   // (the two ends' first: a hallway area's square may lie in a third), except near the ends,
   // which may lie in the inflation and are placed on free cells, and near a door's middle, where
   // both regions' freespace ends at the door line.
   const RegionEntry &ra = entry(a.region), &rb = entry(b.region);
-  const std::vector<Eigen::Vector2d> line = middle ? std::vector{a.position, *middle, b.position}
-                                                   : std::vector{a.position, b.position};
-  for (std::size_t i = 1; i < line.size(); ++i) {
-    const Eigen::Vector2d from = line[i - 1], to = line[i];
-    const int samples = std::max(1, static_cast<int>(std::ceil((to - from).norm() / (0.5 * config_.gridResolutionM))));
-    for (int k = 0; k <= samples; ++k) {
-      const Eigen::Vector2d p = from + (to - from) * (double(k) / samples);
-      if ((p - a.position).norm() < config_.crossingSnapM || (p - b.position).norm() < config_.crossingSnapM) continue;
-      if (middle && (p - *middle).norm() < config_.robotRadiusM) continue;
-      if (!ra.freeAt(p) && !rb.freeAt(p) && regionsAt(p).empty()) return false;
+  const auto freeAlong = [&](const std::vector<Eigen::Vector2d>& line, double endSlack) {
+    for (std::size_t i = 1; i < line.size(); ++i) {
+      const Eigen::Vector2d from = line[i - 1], to = line[i];
+      const int samples = std::max(1, static_cast<int>(std::ceil((to - from).norm() / (0.5 * config_.gridResolutionM))));
+      for (int k = 0; k <= samples; ++k) {
+        const Eigen::Vector2d p = from + (to - from) * (double(k) / samples);
+        if ((p - line.front()).norm() < endSlack || (p - line.back()).norm() < endSlack) continue;
+        if (middle && (p - *middle).norm() < config_.robotRadiusM) continue;
+        if (!ra.freeAt(p) && !rb.freeAt(p) && regionsAt(p).empty()) return false;
+      }
     }
+    return true;
+  };
+  if (a.crossing == b.crossing) {
+    // One crossing point near two regions: joined only if the robot gets from where it is placed
+    // in one to where it is placed in the other over free cells (a point in the wall between two
+    // rooms is near both and joins neither).
+    const auto pa = ra.nearestFree(a.position, config_.crossingSnapM, true);
+    const auto pb = rb.nearestFree(b.position, config_.crossingSnapM, true);
+    return pa && pb && freeAlong({*pa, *pb}, 0.0);
   }
-  return true;
+  return freeAlong(middle ? std::vector{a.position, *middle, b.position} : std::vector{a.position, b.position},
+                   config_.crossingSnapM);
 }
 
 std::optional<Eigen::Vector2d> RoutePlanner::doorMiddle(GatewayId id) const {

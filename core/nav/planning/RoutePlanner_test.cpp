@@ -4,7 +4,7 @@
 // name; typed refusals for goals outside the map or in an obstacle and for far starts; a start
 // just outside the map is placed in it, and a start in a pocket of free cells cut off from the rest
 // is placed where it leads on; a gateway outside the RG graph joins its regions, but not through a
-// wall.
+// wall, nor at one crossing point in the wall between two rooms.
 #include <cppunit/extensions/HelperMacros.h>
 
 #include <algorithm>
@@ -36,6 +36,7 @@ class RoutePlannerTest : public CppUnit::TestFixture {
   CPPUNIT_TEST(aStartInACutOffPocketIsPlacedWhereItLeadsOn);
   CPPUNIT_TEST(aGatewayWithAnUnknownSideStillJoinsItsRegions);
   CPPUNIT_TEST(noPassageThroughAWall);
+  CPPUNIT_TEST(noJumpAtACrossingPointInAWall);
   CPPUNIT_TEST_SUITE_END();
 
  public:
@@ -162,6 +163,25 @@ class RoutePlannerTest : public CppUnit::TestFixture {
     const Plan plan = planner_.plan({4.0, 4.0, 0.0}, PlanGoal::at({9.0, 4.0}));
     CPPUNIT_ASSERT(std::none_of(plan.route.begin(), plan.route.end(), [&](const auto& n) { return n.gateway == fake.id; }));
     CPPUNIT_ASSERT(plan.lengthM > 7.0);  // down through door 11, along the hallway, up through door 12
+  }
+
+  // A detected gateway no region has taken in, with one crossing point in the wall between the two
+  // rooms (x in [6, 7]) that snaps into both (the snap reaching 1 m here): the rooms are not joined
+  // there, the route still goes through the hallway.
+  void noJumpAtACrossingPointInAWall() {
+    rgnav::RoutePlannerConfig config;
+    config.crossingSnapM = 1.0;
+    RoutePlanner planner(config);
+    rgnav::PlanningMap map = rgnav::planningMapOf(*kernel_);
+    rgnav::GatewayView fake;
+    fake.id = rgnav::GatewayId{999};
+    fake.gatewayPoints = {{6.5, 3.5}, {6.5, 4.5}};
+    fake.crossingPoints = {{6.5, 4.0}};
+    map.gateways.push_back(fake);
+    planner.setMap(map);
+    const Plan plan = planner.plan({4.0, 4.0, 0.0}, PlanGoal::at({9.0, 4.0}));
+    CPPUNIT_ASSERT(std::none_of(plan.route.begin(), plan.route.end(), [&](const auto& n) { return n.gateway == fake.id; }));
+    CPPUNIT_ASSERT(plan.lengthM > 7.0);
   }
 
   // At the hallway's south wall, off its free cells: placed on the nearest free cell. 0.3 m behind
