@@ -126,7 +126,10 @@ PlanningMap planningMapFromJson(const std::string& text, const std::string& sour
       throw FormatError(source, 0, std::string("not a ") + kFormat + " version " + std::to_string(kVersion) + " map");
     PlanningMap map;
     for (const json& r : j.at("regions")) map.regions.push_back(region(r));
+    // The detector's gateways no region has taken in yet too: the PathPlanning module plans with
+    // them (gatewayViews), so an offline plan on the exported map must as well.
     for (const json& g : j.at("gateways")) map.gateways.push_back(gateway(g));
+    for (const json& g : j.at("gatewayHypotheses")) map.gateways.push_back(gateway(g));
     map.graph = graph(j.at("graph"));
     map.revision = integerFrom(j.at("summary").at("lastEventId"));
     return map;

@@ -1,10 +1,12 @@
 // An RG map exported to JSON (RgMapJson.h) and read back into a PlanningMap equals what the kernel
 // serves of it (RgMapViews.h) up to the export's rounding: every region with its frame, lines,
-// freespace bits and named objects, the map's gateways, the graph's nodes and edges with their
-// costs, and the revision. Files of another format or version, with a freespace whose size and
+// freespace bits and named objects, the map's gateways (also those no region has taken in), the
+// graph's nodes and edges with their costs, and the revision; a gateway hypothesis in the file is
+// read as a gateway without sides. Files of another format or version, with a freespace whose size and
 // bits disagree, or with an edge naming an unknown node, are FormatErrors naming the source.
 #include <cppunit/extensions/HelperMacros.h>
 
+#include <algorithm>
 #include <nlohmann/json.hpp>
 
 #include "core/common/Errors.h"
@@ -38,6 +40,7 @@ std::string formatErrorOf(const std::string& text) {
 class PlanningMapJsonTest : public CppUnit::TestFixture {
   CPPUNIT_TEST_SUITE(PlanningMapJsonTest);
   CPPUNIT_TEST(exportedMapReadsBack);
+  CPPUNIT_TEST(gatewayHypothesesAreRead);
   CPPUNIT_TEST(otherFilesAreRefused);
   CPPUNIT_TEST_SUITE_END();
 
@@ -68,18 +71,17 @@ class PlanningMapJsonTest : public CppUnit::TestFixture {
       for (std::size_t i = 0; i < read.objects.size(); ++i) CPPUNIT_ASSERT_EQUAL(served.objects[i].name, read.objects[i].name);
     }
     CPPUNIT_ASSERT_EQUAL(std::string("hall"), map.regions.front().summary.name);
-    std::vector<GatewayView> inMap;
-    for (const GatewayView& g : gatewayViews(kernel))
-      if (!g.sideA.isNone() || !g.sideB.isNone()) inMap.push_back(g);
-    CPPUNIT_ASSERT_EQUAL(inMap.size(), map.gateways.size());
-    CPPUNIT_ASSERT(!inMap.empty());
-    for (std::size_t i = 0; i < inMap.size(); ++i) {
-      CPPUNIT_ASSERT(inMap[i].id == map.gateways[i].id);
-      CPPUNIT_ASSERT_EQUAL(inMap[i].door, map.gateways[i].door);
-      CPPUNIT_ASSERT(inMap[i].sideA == map.gateways[i].sideA && inMap[i].sideB == map.gateways[i].sideB);
-      CPPUNIT_ASSERT_EQUAL(inMap[i].crossingPoints.size(), map.gateways[i].crossingPoints.size());
-      for (std::size_t k = 0; k < inMap[i].crossingPoints.size(); ++k)
-        CPPUNIT_ASSERT(near(inMap[i].crossingPoints[k], map.gateways[i].crossingPoints[k]));
+    // Every gateway the module plans with, those no region has taken in yet too.
+    const std::vector<GatewayView> served = gatewayViews(kernel);
+    CPPUNIT_ASSERT_EQUAL(served.size(), map.gateways.size());
+    CPPUNIT_ASSERT(!served.empty());
+    for (const GatewayView& s : served) {
+      const auto read = std::find_if(map.gateways.begin(), map.gateways.end(), [&](const GatewayView& g) { return g.id == s.id; });
+      CPPUNIT_ASSERT(read != map.gateways.end());
+      CPPUNIT_ASSERT_EQUAL(s.door, read->door);
+      CPPUNIT_ASSERT(s.sideA == read->sideA && s.sideB == read->sideB);
+      CPPUNIT_ASSERT_EQUAL(s.crossingPoints.size(), read->crossingPoints.size());
+      for (std::size_t k = 0; k < s.crossingPoints.size(); ++k) CPPUNIT_ASSERT(near(s.crossingPoints[k], read->crossingPoints[k]));
     }
     const GraphView graph = graphView(kernel.graph());
     CPPUNIT_ASSERT_EQUAL(graph.nodes.size(), map.graph.nodes.size());
@@ -97,6 +99,23 @@ class PlanningMapJsonTest : public CppUnit::TestFixture {
       CPPUNIT_ASSERT_DOUBLES_EQUAL(a.costM, b.costM, kMm);
     }
     CPPUNIT_ASSERT_EQUAL(kernel.state().events.back().id, map.revision);
+  }
+
+  // A detected gateway no region has taken in is exported apart ("gatewayHypotheses"); the
+  // PathPlanning module plans with it, so the map read back has it too, without sides.
+  void gatewayHypothesesAreRead() {
+    nlohmann::json j = nlohmann::json::parse(exportRgMapJson(snapshotOf(testing::twoRoomMap())));
+    nlohmann::json hypothesis = j["gateways"][0];
+    hypothesis["id"] = 999;
+    hypothesis["sides"][0]["region"] = nullptr;
+    hypothesis["sides"][1]["region"] = nullptr;
+    j["gatewayHypotheses"].push_back(hypothesis);
+    const PlanningMap map = planningMapFromJson(j.dump(), "with-hypothesis");
+    CPPUNIT_ASSERT_EQUAL(j["gateways"].size() + 1, map.gateways.size());
+    const GatewayView& read = map.gateways.back();
+    CPPUNIT_ASSERT(read.id == GatewayId{999});
+    CPPUNIT_ASSERT(read.sideA.isNone() && read.sideB.isNone());
+    CPPUNIT_ASSERT_EQUAL(hypothesis["crossingPoints"].size(), read.crossingPoints.size());
   }
 
   void otherFilesAreRefused() {
