@@ -6,7 +6,7 @@
 #include <cmath>
 #include <opencv2/imgproc.hpp>
 
-#include "core/raster/GridMat.h"
+#include "core/raster/ImageGrid.h"
 #include "core/raster/ImageFile.h"
 
 namespace rgnav {
@@ -39,12 +39,7 @@ int pixelsPerCell(const OccupancyGrid& grid) {
 
 // The grid in gray, image row 0 at the top (grid row 0 is at the bottom), each cell a square.
 cv::Mat gridImage(const OccupancyGrid& grid) {
-  cv::Mat cells = cellMat(grid);
-  cv::Mat lut(1, 256, CV_8U, cv::Scalar(0));
-  for (const Cell c : {Cell::Free, Cell::Occupied, Cell::Unknown})
-    lut.at<std::uint8_t>(static_cast<int>(c)) = kCellGray[static_cast<int>(c)];
-  cv::LUT(cells, lut, cells);
-  cv::flip(cells, cells, 0);
+  const cv::Mat cells = imageFromGrid(grid, [](Cell c) { return kCellGray[static_cast<std::size_t>(c)]; });
   const int k = pixelsPerCell(grid);
   cv::Mat gray, bgr;
   cv::resize(cells, gray, cv::Size(), k, k, cv::INTER_NEAREST);
