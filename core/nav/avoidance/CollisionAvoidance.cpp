@@ -61,6 +61,19 @@ constexpr double kMovingReachM = 6.0;
 
 double distance(const Pose2D& a, const Pose2D& b) { return std::hypot(a.x - b.x, a.y - b.y); }
 
+// Where `p` lies along the stretch from a to b: u = 0 at a, 1 at b (not clamped), and its
+// distance to the nearest point of the stretch.
+struct OnStretch {
+  double u = 0.0;
+  double distance = 0.0;
+};
+OnStretch onStretch(const Pose2D& a, const Pose2D& b, const Pose2D& p) {
+  const double length = distance(a, b);
+  const double u = length > 0.0 ? ((p.x - a.x) * (b.x - a.x) + (p.y - a.y) * (b.y - a.y)) / (length * length) : 0.0;
+  const double w = std::clamp(u, 0.0, 1.0);
+  return {u, std::hypot(a.x + w * (b.x - a.x) - p.x, a.y + w * (b.y - a.y) - p.y)};
+}
+
 }  // namespace
 
 std::string toString(AvoidanceAction action) {
@@ -150,12 +163,8 @@ void CollisionAvoidance::dropPassedTargets(const Pose2D& from) {
   std::size_t passed = 0;
   while (passed + 1 < targets_.size()) {
     const Pose2D& a = targets_[passed];
-    const Pose2D& b = targets_[passed + 1];
-    const double length = distance(a, b);
-    const double u = length > 0.0 ? ((from.x - a.x) * (b.x - a.x) + (from.y - a.y) * (b.y - a.y)) / (length * length) : 0.0;
-    const double beside = std::hypot(a.x + std::clamp(u, 0.0, 1.0) * (b.x - a.x) - from.x,
-                                     a.y + std::clamp(u, 0.0, 1.0) * (b.y - a.y) - from.y);
-    if (distance(a, from) >= config_.targetPassedM && !(u > 0.0 && beside < 2.0 * config_.targetPassedM)) break;
+    const OnStretch next = onStretch(a, targets_[passed + 1], from);
+    if (distance(a, from) >= config_.targetPassedM && !(next.u > 0.0 && next.distance < 2.0 * config_.targetPassedM)) break;
     ++passed;
   }
   targets_.erase(targets_.begin(), targets_.begin() + static_cast<std::ptrdiff_t>(passed));
@@ -178,13 +187,9 @@ double CollisionAvoidance::pathLeftFrom(const TrajectoryChain& chain) const {
     const Pose2D& a = targets_[j];
     double off = distance(end, a), along = toGoal[j];
     if (j + 1 < n) {
-      const Pose2D& b = targets_[j + 1];
-      const double length = distance(a, b);
-      const double u = length > 0.0
-                           ? std::clamp(((end.x - a.x) * (b.x - a.x) + (end.y - a.y) * (b.y - a.y)) / (length * length), 0.0, 1.0)
-                           : 0.0;
-      off = std::hypot(a.x + u * (b.x - a.x) - end.x, a.y + u * (b.y - a.y) - end.y);
-      along = toGoal[j + 1] + (1.0 - u) * length;
+      const OnStretch on = onStretch(a, targets_[j + 1], end);
+      off = on.distance;
+      along = toGoal[j + 1] + (1.0 - std::clamp(on.u, 0.0, 1.0)) * distance(a, targets_[j + 1]);
     }
     best = std::min(best, kOffPathWeight * off + along);
   }
