@@ -4,17 +4,13 @@
 #include <algorithm>
 #include <cmath>
 
-#include "core/common/Errors.h"
 #include "core/logs/OpenLog.h"
 
 namespace rgnav {
 
 std::vector<StampedPose> readScanPoses(const std::string& path) {
-  const auto log = openLog(path);
   std::vector<StampedPose> poses;
-  while (auto record = log->next())
-    if (const auto* scan = std::get_if<LaserScan>(&*record)) poses.push_back({scan->stamp, scan->sensorPose});
-  if (poses.empty()) throw InvalidArgumentError("no scans in " + path);
+  for (const LaserScan& scan : readLaserScans(path)) poses.push_back({scan.stamp, scan.sensorPose});
   std::stable_sort(poses.begin(), poses.end(), [](const StampedPose& a, const StampedPose& b) { return a.stamp < b.stamp; });
   return poses;
 }

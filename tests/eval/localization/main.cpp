@@ -69,19 +69,6 @@ std::string shown(double value) {
   return text;
 }
 
-std::vector<rgnav::LaserScan> readScans(const Options& options) {
-  const auto log = rgnav::openLog(options.log);
-  const std::size_t limit = options.maxScans == 0 ? SIZE_MAX : options.maxScans;
-  std::vector<rgnav::LaserScan> scans;
-  while (scans.size() < limit) {
-    auto record = log->next();
-    if (!record) break;
-    if (auto* scan = std::get_if<rgnav::LaserScan>(&*record)) scans.push_back(std::move(*scan));
-  }
-  if (scans.empty()) throw rgnav::InvalidArgumentError("no scans in " + options.log);
-  return scans;
-}
-
 // Sets each scan's sensorPose to its corrected pose from --corrected and drops the scans without one.
 void takeCorrectedPoses(const Options& options, std::vector<rgnav::LaserScan>& scans) {
   if (options.corrected.empty()) {
@@ -167,7 +154,7 @@ void writeTrace(std::ostream& out, const char* filter, const rgnav::Localization
 }
 
 void evaluate(const Options& options) {
-  std::vector<rgnav::LaserScan> scans = readScans(options);
+  std::vector<rgnav::LaserScan> scans = rgnav::readLaserScans(options.log, {}, options.maxScans);
   takeCorrectedPoses(options, scans);
   if (options.noiseSeed) addOdometryNoise(scans, *options.noiseSeed);
   else if (odometryIsCorrected(scans))
