@@ -1,7 +1,9 @@
 // One localization run along a log; see LocalizationRun.h.
 #include "tests/eval/localization/LocalizationRun.h"
 
+#include <algorithm>
 #include <ctime>
+#include <map>
 
 #include "core/common/Errors.h"
 
@@ -12,6 +14,15 @@ double threadCpuSeconds() {
   timespec t{};
   clock_gettime(CLOCK_THREAD_CPUTIME_ID, &t);
   return static_cast<double>(t.tv_sec) + 1e-9 * static_cast<double>(t.tv_nsec);
+}
+
+// The region holding the most weight of the particle set.
+RegionId heaviestRegion(const std::vector<Particle>& particles) {
+  std::map<RegionId, double> weights;
+  for (const Particle& p : particles) weights[p.region] += p.weight;
+  const auto best = std::max_element(weights.begin(), weights.end(),
+                                     [](const auto& a, const auto& b) { return a.second < b.second; });
+  return best == weights.end() ? RegionId() : best->first;
 }
 
 }  // namespace
@@ -48,6 +59,7 @@ LocalizationRun localizeAlong(const LocalizationMap& map, std::span<const LaserS
     outcome.estimate = compose(estimate.mapPose, moved);
     outcome.bestParticle = compose(estimate.bestParticle, moved);
     outcome.region = estimate.region;
+    outcome.particleRegion = heaviestRegion(mcl.particles());
     outcome.particles = estimate.particles;
     outcome.clusterWeight = estimate.clusterWeight;
     outcome.fitPerBeam = estimate.fitPerBeam;

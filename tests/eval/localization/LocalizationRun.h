@@ -32,7 +32,8 @@ struct LocalizedScan {
   Pose2D truth;
   Pose2D estimate;      // the heaviest cluster's mean, map frame
   Pose2D bestParticle;  // map frame
-  RegionId region;
+  RegionId region;          // the estimate's region (PoseEstimate::region)
+  RegionId particleRegion;  // the region holding the most particle weight
   std::size_t particles = 0;
   double clusterWeight = 0.0;
   double fitPerBeam = 0.0;

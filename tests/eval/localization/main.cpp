@@ -27,6 +27,7 @@
 #include <filesystem>
 #include <fstream>
 #include <iostream>
+#include <map>
 #include <optional>
 #include <string>
 #include <vector>
@@ -144,12 +145,25 @@ std::string figures(const rgnav::LocalizationRun& run) {
   return text;
 }
 
+// How often the particles' heaviest region is the region the kernel mapped the scan into.
+std::string regionAgreement(const rgnav::LocalizationRun& run, const std::map<rgnav::DataId, rgnav::RegionId>& scanRegions) {
+  std::size_t same = 0;
+  for (const auto& s : run.scans) {
+    const auto mapped = scanRegions.find(s.scanId);
+    same += mapped != scanRegions.end() && mapped->second == s.particleRegion;
+  }
+  char text[64];
+  std::snprintf(text, sizeof text, " region_agreement=%.3f", static_cast<double>(same) / static_cast<double>(run.scans.size()));
+  return text;
+}
+
 void writeTrace(std::ostream& out, const char* filter, const rgnav::LocalizationRun& run) {
   for (const auto& s : run.scans)
     out << filter << ' ' << s.scanId << ' ' << s.updated << ' ' << s.truth.x << ' ' << s.truth.y << ' '
         << s.truth.theta << ' ' << s.estimate.x << ' ' << s.estimate.y << ' ' << s.estimate.theta << ' '
         << s.error.translationM << ' ' << s.error.rotationRad * 180.0 / M_PI << ' ' << s.bestParticleError.translationM
-        << ' ' << s.bestParticleError.rotationRad * 180.0 / M_PI << ' ' << s.region.value() << ' ' << s.particles
+        << ' ' << s.bestParticleError.rotationRad * 180.0 / M_PI << ' ' << s.region.value() << ' '
+        << s.particleRegion.value() << ' ' << s.particles
         << ' ' << s.clusterWeight << ' ' << s.fitPerBeam << '\n';
 }
 
@@ -169,7 +183,7 @@ void evaluate(const Options& options) {
   if (!options.trace.empty()) {
     trace.emplace(options.trace);
     *trace << "# filter scan_id updated true_x true_y true_theta est_x est_y est_theta err_m err_deg best_err_m "
-              "best_err_deg region particles cluster_weight fit_per_beam\n";
+              "best_err_deg region particle_region particles cluster_weight fit_per_beam\n";
   }
   if (options.global) {
     const auto floor = rgnav::LocalizationMap::wholeFloor(map.regions, options.setup.config.beam);
@@ -178,6 +192,8 @@ void evaluate(const Options& options) {
     if (trace) writeTrace(*trace, "global", global);
   }
   const auto regions = rgnav::LocalizationMap::fromViews(map.regions, map.gateways, options.setup.config.beam);
+  std::cout << "localization map: regions=" << regions.regionIds().size()
+            << " handover_gateways=" << regions.gateways().size() << " (both sides known, not neutralised)\n";
   const auto start = run.scanRegions.find(localized.front().id);
   const rgnav::LocalizationRun regional = rgnav::localizeAlong(
       regions, localized, start == run.scanRegions.end() ? rgnav::RegionId() : start->second, options.setup);
@@ -185,7 +201,8 @@ void evaluate(const Options& options) {
     writeTrace(*trace, "region", regional);
     if (!trace->flush()) throw rgnav::FileError("cannot write " + options.trace);
   }
-  std::cout << "localization " << name << ": " << figures(regional) << std::endl;
+  std::cout << "localization " << name << ": " << figures(regional) << regionAgreement(regional, run.scanRegions)
+            << std::endl;
 }
 
 }  // namespace
