@@ -145,15 +145,31 @@ std::string figures(const rgnav::LocalizationRun& run) {
   return text;
 }
 
-// How often the particles' heaviest region is the region the kernel mapped the scan into.
+constexpr std::size_t kFollowScans = 10;  // a change of region is followed if the particles get there this soon
+
+// How often the particles' heaviest region is the region the kernel mapped the scan into, and of
+// the kernel's changes of region between consecutive scans, how many the particles followed
+// within kFollowScans scans (the hand-over at gateways working).
 std::string regionAgreement(const rgnav::LocalizationRun& run, const std::map<rgnav::DataId, rgnav::RegionId>& scanRegions) {
-  std::size_t same = 0;
+  std::vector<rgnav::RegionId> mapped;
   for (const auto& s : run.scans) {
-    const auto mapped = scanRegions.find(s.scanId);
-    same += mapped != scanRegions.end() && mapped->second == s.particleRegion;
+    const auto it = scanRegions.find(s.scanId);
+    mapped.push_back(it == scanRegions.end() ? rgnav::RegionId() : it->second);
   }
-  char text[64];
-  std::snprintf(text, sizeof text, " region_agreement=%.3f", static_cast<double>(same) / static_cast<double>(run.scans.size()));
+  std::size_t same = 0, changes = 0, followed = 0;
+  for (std::size_t i = 0; i < run.scans.size(); ++i) {
+    same += mapped[i] == run.scans[i].particleRegion;
+    if (i == 0 || mapped[i] == mapped[i - 1] || mapped[i].isNone() || mapped[i - 1].isNone()) continue;
+    ++changes;
+    for (std::size_t j = i; j < std::min(run.scans.size(), i + kFollowScans); ++j)
+      if (run.scans[j].particleRegion == mapped[i]) {
+        ++followed;
+        break;
+      }
+  }
+  char text[128];
+  std::snprintf(text, sizeof text, " region_agreement=%.3f region_changes=%zu followed=%zu",
+                static_cast<double>(same) / static_cast<double>(run.scans.size()), changes, followed);
   return text;
 }
 
