@@ -55,8 +55,8 @@ void LocalizationClient::relocalize() {
   connection_.call("relocalize", [](Localizer l) { l->relocalize(); });
 }
 
-LocalizationStateView LocalizationClient::state() {
-  return connection_.call("localizationState", [](Localizer l) { return fromIdl(l->localizationState()); });
+LocalizationStateView LocalizationClient::filterState() {
+  return connection_.call("filterState", [](Localizer l) { return fromIdl(l->filterState()); });
 }
 
 }  // namespace rgnav

@@ -26,7 +26,7 @@ class LocalizationClient : public ModuleClientOf<RGNav::Localization> {
   // sigma: x, y in m, theta in rad; `regionHint` none: no preference.
   void setPose(const Pose2D& mapPose, const Eigen::Vector3d& sigma, RegionId regionHint = RegionId());
   void relocalize();
-  LocalizationStateView state();
+  LocalizationStateView filterState();
 };
 
 }  // namespace rgnav

@@ -5,6 +5,7 @@
 
 #include <limits>
 
+#include "core/common/Errors.h"
 #include "core/nav/localization/ParticleSetCodec.h"
 
 using namespace rgnav;
