@@ -65,10 +65,20 @@ bool LocalizationService::followOnce() {
   refreshMapIfDue();
   reportTraversals();
   DataId after;
+  bool idle;
   {
     std::lock_guard lock(mutex_);
     if (!resumeIfDue()) return false;
     after = std::max(lastScan_, skipScan_);
+    idle = !mcl_.initialised() && !(options_.startAtOdometry && !started_);
+  }
+  if (idle) {
+    // Nothing to localize: follow the Laser's latest ID without pulling scans (a lock-step
+    // simulator waits meanwhile), so that the scan after setPose is the next one.
+    const DataId latest = laser_.latestId();
+    std::lock_guard lock(mutex_);
+    lastScan_ = std::max(lastScan_, latest);
+    return false;
   }
   const DataBatch<LaserScan> batch = laser_.scansSince(after, options_.fetchBatch);
   if (batch.records.empty()) return false;
