@@ -168,7 +168,7 @@ void LocalizationService::take(const LaserScan& scan) {
     health_.add("updates");
     lastUpdate_ = mcl_.estimate();
     lastUpdateOdometry_ = scan.odometry;
-    for (const GatewayTraversal& t : mcl_.takeTraversals()) pendingTraversals_.push_back(t);
+    for (const ConfirmedTraversal& t : mcl_.takeTraversals()) pendingTraversals_.push_back(t);
   }
   if (!lastUpdate_) return;
   history_[scan.id] = {scan.id, movedOn(*lastUpdate_, lastUpdateOdometry_, scan.odometry, map_)};
@@ -176,13 +176,13 @@ void LocalizationService::take(const LaserScan& scan) {
 }
 
 void LocalizationService::reportTraversals() {
-  std::vector<GatewayTraversal> pending;
+  std::vector<ConfirmedTraversal> pending;
   {
     std::lock_guard lock(mutex_);
     pending.swap(pendingTraversals_);
   }
   for (std::size_t i = 0; i < pending.size(); ++i) {
-    const GatewayTraversal& t = pending[i];
+    const ConfirmedTraversal& t = pending[i];
     try {
       kernel_.reportTraversal(t.gateway, t.from, t.to, t.scanId);
       health_.add("traversals_reported");

@@ -104,7 +104,7 @@ class LocalizationService {
   Pose2D lastUpdateOdometry_;
   std::map<DataId, ScanEstimate> history_;
   std::uint64_t updates_ = 0, traversalsReported_ = 0;
-  std::vector<GatewayTraversal> pendingTraversals_;
+  std::vector<ConfirmedTraversal> pendingTraversals_;
   bool started_ = false;  // startAtOdometry: the initial guess was made
   CheckpointPacer pacer_;
   CheckpointRetry retry_;

@@ -187,8 +187,8 @@ PoseEstimate RegionMcl::estimate() const {
   return *estimate_;
 }
 
-std::vector<GatewayTraversal> RegionMcl::takeTraversals() {
-  std::vector<GatewayTraversal> out;
+std::vector<ConfirmedTraversal> RegionMcl::takeTraversals() {
+  std::vector<ConfirmedTraversal> out;
   out.swap(traversals_);
   return out;
 }

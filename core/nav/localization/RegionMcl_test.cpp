@@ -16,7 +16,7 @@ namespace {
 struct Walk {
   double finalError = 0.0, maxError = 0.0;
   RegionId finalRegion;
-  std::vector<GatewayTraversal> traversals;
+  std::vector<ConfirmedTraversal> traversals;
   bool allParticlesInRoom2 = false;
 };
 
@@ -36,7 +36,7 @@ Walk walkThroughTheDoor(const LocalizationMap& map, const testing::TwoRooms& roo
     walk.finalError = std::hypot(e.mapPose.x - truth.x, e.mapPose.y - truth.y);
     walk.maxError = std::max(walk.maxError, walk.finalError);
     walk.finalRegion = e.region;
-    for (const GatewayTraversal& t : mcl.takeTraversals()) walk.traversals.push_back(t);
+    for (const ConfirmedTraversal& t : mcl.takeTraversals()) walk.traversals.push_back(t);
   }
   walk.allParticlesInRoom2 = std::all_of(mcl.particles().begin(), mcl.particles().end(),
                                          [](const Particle& p) { return p.region == RegionId{2}; });
