@@ -208,6 +208,8 @@ void LocalizationService::checkpoint() {
     const auto began = pacer_.now();
     writeFileAtomically(options_.checkpointFile, serializeParticles({lastUpdate_->scanId, mcl_.particles()}));
     pacer_.written(began);
+    health_.add("checkpoints_written");
+    health_.set("checkpoint_scan", lastUpdate_->scanId);
     retry_.succeeded();
   } catch (const FileError& e) {
     retry_.failed(e.what());
