@@ -72,14 +72,16 @@ bool LocalizationService::followOnce() {
     after = std::max(lastScan_, skipScan_);
     idle = !mcl_.initialised() && !(options_.startAtOdometry && !started_);
   }
+  // Only scans that exist are asked for: a lock-step simulator is paced by its other consumers
+  // (the mapping chain), never by the localizer.
+  const DataId latest = laser_.latestId();
   if (idle) {
-    // Nothing to localize: follow the Laser's latest ID without pulling scans (a lock-step
-    // simulator waits meanwhile), so that the scan after setPose is the next one.
-    const DataId latest = laser_.latestId();
+    // Nothing to localize: the scan after setPose is the next one.
     std::lock_guard lock(mutex_);
     lastScan_ = std::max(lastScan_, latest);
     return false;
   }
+  if (after >= latest) return false;
   const DataBatch<LaserScan> batch = laser_.scansSince(after, options_.fetchBatch);
   if (batch.records.empty()) return false;
   if (batch.records.front().id != after + 1) health_.add("scans_missed", batch.records.front().id - after - 1);

@@ -4,8 +4,9 @@
 // runs the filter on every scan and keeps the estimate of each scan in a bounded history (between
 // filter updates the last update's estimate moved on by the odometry). Gateway traversals the
 // filter confirms are reported to the kernel as evidence (RGMappingKernel::reportTraversal).
-// Until setPose or relocalize (or a checkpoint) gives it particles it only follows the Laser's
-// latest scan ID without taking scans (a lock-step simulator then waits for it); with `startAtOdometry` the first scan's odometry pose (once the map has a region) is
+// It asks only for scans the Laser has (never for the next one, which would advance a lock-step
+// simulator: the mapping chain paces it, as in the demo set). Until setPose or relocalize (or a
+// checkpoint) gives it particles it only follows the Laser's latest scan ID; with `startAtOdometry` the first scan's odometry pose (once the map has a region) is
 // its initial guess - right where the map frame is the ScanMapper's, which starts at the first
 // scan's odometry pose, as in the demo set.
 // Checkpoints: the particle set of the last filter update and that update's scan

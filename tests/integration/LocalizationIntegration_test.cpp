@@ -102,9 +102,15 @@ void waitForMap(LocalizationClient& localization) {
             "the module's copy of the kernel's map", std::chrono::seconds(60), std::chrono::milliseconds(50));
 }
 
-void waitForScan(LocalizationClient& localization, DataId scan, const std::string& what) {
-  waitUntil([&] { return localization.filterState().lastScan >= scan; }, what, std::chrono::seconds(180),
-            std::chrono::milliseconds(50));
+// The module never advances the lock-step simulator (the mapping chain does in the demo): the test
+// pulls the scans up to `scan` itself, as a consumer that has every scan, and waits for the module.
+void waitForScan(LaserClient& laser, LocalizationClient& localization, DataId scan, const std::string& what) {
+  waitUntil(
+      [&] {
+        for (DataId latest = laser.latestId(); latest < scan; latest = laser.latestId()) laser.scansSince(latest, 1);
+        return localization.filterState().lastScan >= scan;
+      },
+      what, std::chrono::seconds(180), std::chrono::milliseconds(50));
 }
 
 // The estimates of scans first..last (every 5th) against the true poses; fails beyond the bounds.
@@ -162,26 +168,30 @@ class LocalizationIntegrationTest : public CppUnit::TestFixture {
     CPPUNIT_ASSERT_THROW(localization.latestEstimate(), NotLocalizedError);
     CPPUNIT_ASSERT_THROW(localization.particles(10), NotLocalizedError);
 
-    // The lock-step simulator waits for a consumer: the test pulls the first scan itself.
-    laser.scansSince(0, 1);
+    laser.scansSince(0, 1);  // the first scan
     const DataId start = laser.latestId();
     localization.setPose(truth.truePose(start), {0.1, 0.1, 0.05});
-    waitForScan(localization, start + kFollowedScans, "the module to localize the first scans");
+    waitForScan(laser, localization, start + kFollowedScans, "the module to localize the first scans");
     expectFollows(localization, truth, start + 20, start + kFollowedScans, "after setPose");
     const ParticleSnapshotView snapshot = localization.particles(50);
     CPPUNIT_ASSERT(snapshot.total >= 100 && snapshot.particles.size() == std::min<std::size_t>(50, snapshot.total));
     CPPUNIT_ASSERT(snapshot.particles.front().particle.weight >= snapshot.particles.back().particle.weight);
 
-    // Kill it once it has checkpointed a later update than the first.
-    waitUntil([&] { return localization.status().counters["checkpoint_scan"] > start + 100; },
-              "a checkpoint after the first 100 scans", std::chrono::seconds(60), std::chrono::milliseconds(20));
+    // Kill it once it has checkpointed a later update than the first (the writes are paced by how
+    // long they take, CheckpointPacer.h: the test goes on pulling scans meanwhile).
+    waitUntil(
+        [&] {
+          laser.scansSince(laser.latestId(), 1);
+          return localization.status().counters["checkpoint_scan"] > start + 100;
+        },
+        "a checkpoint after the first 100 scans", std::chrono::seconds(60), std::chrono::milliseconds(5));
     const std::uint64_t checkpointed = localization.status().counters["checkpoint_scan"];
     const ModuleProcessInfo before = cluster->describe("Localization");
     const DataId killedAt = localization.filterState().lastScan;
     CPPUNIT_ASSERT_EQUAL(0, ::kill(static_cast<pid_t>(before.pid), SIGKILL));
     cluster->waitFor("Localization", runningAgainAfter(before.pid), "the restart", std::chrono::seconds(30));
     // Without its checkpoint the restarted module would hold no particles and take no scans.
-    waitForScan(localization, killedAt + 200, "the restarted module to localize on");
+    waitForScan(laser, localization, killedAt + 200, "the restarted module to localize on");
     CPPUNIT_ASSERT(localization.filterState().initialised);
     const std::uint64_t resumedAfter = localization.status().counters["resumed_after_scan"];
     std::cout << "localization: checkpointed scan " << checkpointed << ", killed after scan " << killedAt
