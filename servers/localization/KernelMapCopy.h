@@ -30,6 +30,8 @@ class KernelMapCopy {
   // client throws (ModuleUnavailableError when the kernel does not answer).
   std::optional<KernelMapChanges> refresh();
   std::size_t regionsFetched() const { return regionsFetched_; }
+  // Every scan up to this one is in the map as of the last refresh (MapSummaryView::lastScan).
+  DataId mappedScan() const { return summary_ ? summary_->lastScan : 0; }
 
  private:
   RgMappingKernelClient& kernel_;

@@ -6,9 +6,11 @@
 #include <cmath>
 #include <iostream>
 #include <numeric>
+#include <set>
 
 #include "core/common/AtomicFile.h"
 #include "servers/localization/FreespaceSeeding.h"
+#include "servers/localization/ParticleRehoming.h"
 
 namespace rgnav {
 namespace {
@@ -62,9 +64,13 @@ void LocalizationService::start() { follower_.start(); }
 void LocalizationService::stop() { follower_.stop(); }
 
 bool LocalizationService::followOnce() {
-  refreshMapIfDue();
-  reportTraversals();
   DataId after;
+  {
+    std::lock_guard lock(mutex_);
+    after = std::max(lastScan_, skipScan_);
+  }
+  refreshMapIfDue(options_.mappedScansOnly && after >= copy_.mappedScan());
+  reportTraversals();
   bool idle;
   {
     std::lock_guard lock(mutex_);
@@ -74,7 +80,8 @@ bool LocalizationService::followOnce() {
   }
   // Only scans that exist are asked for: a lock-step simulator is paced by its other consumers
   // (the mapping chain), never by the localizer.
-  const DataId latest = laser_.latestId();
+  DataId latest = laser_.latestId();
+  if (options_.mappedScansOnly) latest = std::min(latest, copy_.mappedScan());
   if (idle) {
     // Nothing to localize: the scan after setPose is the next one.
     std::lock_guard lock(mutex_);
@@ -82,7 +89,8 @@ bool LocalizationService::followOnce() {
     return false;
   }
   if (after >= latest) return false;
-  const DataBatch<LaserScan> batch = laser_.scansSince(after, options_.fetchBatch);
+  const auto count = static_cast<std::uint32_t>(std::min<DataId>(options_.fetchBatch, latest - after));
+  const DataBatch<LaserScan> batch = laser_.scansSince(after, count);
   if (batch.records.empty()) return false;
   if (batch.records.front().id != after + 1) health_.add("scans_missed", batch.records.front().id - after - 1);
   std::lock_guard lock(mutex_);
@@ -95,10 +103,10 @@ bool LocalizationService::followOnce() {
   return true;
 }
 
-void LocalizationService::refreshMapIfDue() {
-  const auto now = std::chrono::steady_clock::now();
-  if (now < nextRefresh_) return;
-  nextRefresh_ = now + std::chrono::duration_cast<std::chrono::steady_clock::duration>(
+void LocalizationService::refreshMapIfDue(bool now) {
+  const auto time = std::chrono::steady_clock::now();
+  if (!now && time < nextRefresh_) return;
+  nextRefresh_ = time + std::chrono::duration_cast<std::chrono::steady_clock::duration>(
                            std::chrono::duration<double>(options_.mapRefreshS));
   try {
     const std::optional<KernelMapChanges> changes = copy_.refresh();
@@ -112,6 +120,11 @@ void LocalizationService::refreshMapIfDue() {
 }
 
 void LocalizationService::applyMap(const KernelMapChanges& changes) {
+  // The map poses of the particles in regions merged away, taken before their frames go.
+  std::vector<Orphan> orphans;
+  const std::set<RegionId> removed(changes.removed.begin(), changes.removed.end());
+  for (std::size_t i = 0; i < mcl_.particles().size(); ++i)
+    if (removed.count(mcl_.particles()[i].region)) orphans.push_back({i, mcl_.mapPose(mcl_.particles()[i])});
   for (const RegionId id : changes.removed) map_.removeRegion(id);
   for (const RegionView& r : changes.regions) map_.setRegion(localizationRegion(r));
   std::vector<GatewayView> held;  // the hand-over needs both sides' regions
@@ -122,14 +135,14 @@ void LocalizationService::applyMap(const KernelMapChanges& changes) {
   health_.add("map_refreshes");
   health_.set("regions_fetched", copy_.regionsFetched());
   health_.set("map_regions", map_.regionIds().size());
-  if (changes.removed.empty() || !mcl_.initialised()) return;
-  // Particles of a region merged away: the rest go on (setParticles takes the next scan as the
-  // odometry reference); none left: a global relocalization.
-  std::vector<Particle> kept;
-  for (const Particle& p : mcl_.particles())
-    if (map_.hasRegion(p.region)) kept.push_back(p);
-  if (kept.size() == mcl_.particles().size()) return;
-  health_.add("particles_dropped_with_regions", mcl_.particles().size() - kept.size());
+  if (lastUpdate_ && !map_.hasRegion(lastUpdate_->region)) lastUpdate_.reset();
+  if (orphans.empty()) return;
+  std::vector<RegionId> fetched;
+  for (const RegionView& r : changes.regions) fetched.push_back(r.summary.id);
+  const std::size_t before = mcl_.particles().size();
+  std::vector<Particle> kept = rehomedParticles(mcl_.particles(), orphans, map_, fetched);
+  health_.add("particles_rehomed", orphans.size());
+  health_.add("particles_dropped_with_regions", before - kept.size());
   lastUpdate_.reset();
   mcl_.setParticles(kept.empty() ? globalParticles() : std::move(kept));
 }

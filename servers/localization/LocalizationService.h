@@ -8,7 +8,10 @@
 // simulator: the mapping chain paces it, as in the demo set). Until setPose or relocalize (or a
 // checkpoint) gives it particles it only follows the Laser's latest scan ID; with `startAtOdometry` the first scan's odometry pose (once the map has a region) is
 // its initial guess - right where the map frame is the ScanMapper's, which starts at the first
-// scan's odometry pose, as in the demo set.
+// scan's odometry pose, as in the demo set. With `mappedScansOnly` (the demo set, where the map is
+// made online while the simulator runs many times faster than real time) it takes only scans the
+// kernel has mapped (its summary's lastScan), refreshing its map copy as soon as it has taken all
+// of them: a scan is weighed on a map that holds its surroundings, not on one that lags behind.
 // Checkpoints: the particle set of the last filter update and that update's scan
 // (ParticleSetCodec.h), written atomically at most once per checkpointIntervalS (less often as
 // writes take longer, CheckpointPacer.h); one that cannot be written degrades the module and is
@@ -46,6 +49,7 @@ struct LocalizationServiceOptions {
   double mapRefreshS = 1.0;           // the kernel's summary is asked at most this often
   std::size_t historyScans = 10000;   // estimates kept for estimateByScan
   bool startAtOdometry = false;       // the first scan's odometry pose is the initial guess (see above)
+  bool mappedScansOnly = false;       // take only scans the kernel has mapped (see above)
   Eigen::Vector3d startSigma{0.1, 0.1, 0.05};
   std::uint64_t seed = 1;
 };
@@ -75,7 +79,8 @@ class LocalizationService {
 
  private:
   bool followOnce();             // false when there was nothing new
-  void refreshMapIfDue();        // kernel errors are the health error "kernel", not the scans'
+  // Kernel errors are the health error "kernel", not the scans'. `now`: whatever the refresh period.
+  void refreshMapIfDue(bool now);
   void applyMap(const KernelMapChanges& changes);  // under lock
   bool resumeIfDue();            // under lock: false while the checkpoint waits for the map
   void take(const LaserScan& scan);  // under lock

@@ -29,6 +29,8 @@ int main(int argc, char** argv) {
        "s between looks at the kernel's map summary (at least)")
       ("start-at-odometry", po::bool_switch(&serviceOptions.startAtOdometry),
        "take the first scan's odometry pose as the initial guess (a map made by a ScanMapper from this robot's start)")
+      ("mapped-scans-only", po::bool_switch(&serviceOptions.mappedScansOnly),
+       "take only scans the kernel has mapped (a map made online by a faster-than-real-time simulation)")
       ("start-sigma-xy", po::value(&sigmaXy)->default_value(0.1), "m: that guess's standard deviation in x and y")
       ("start-sigma-theta", po::value(&sigmaTheta)->default_value(0.05), "rad: and in the heading")
       ("seed", po::value(&serviceOptions.seed)->default_value(1), "random seed of the filter");
