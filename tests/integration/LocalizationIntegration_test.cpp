@@ -137,18 +137,6 @@ void expectFollows(LocalizationClient& localization, GroundTruthClient& truth, D
   CPPUNIT_ASSERT_MESSAGE(what, sum / n < kMeanTransErrM);
 }
 
-// The field a raw call's InvalidArgument names (the connection makes it a BadArgumentError), or
-// "(accepted)".
-template <class F>
-std::string refusedField(F&& call) {
-  try {
-    call();
-  } catch (const BadArgumentError& e) {
-    return e.field();
-  }
-  return "(accepted)";
-}
-
 }  // namespace
 
 class LocalizationIntegrationTest : public CppUnit::TestFixture {
