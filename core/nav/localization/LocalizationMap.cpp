@@ -88,7 +88,9 @@ std::vector<RegionId> LocalizationMap::neighbours(RegionId id) const {
 
 const LikelihoodField& LocalizationMap::field(RegionId id) const {
   const LocalizationRegion& own = region(id);
-  const std::vector<RegionId> stacked = neighbours(id);
+  std::vector<RegionId> stacked = neighbours(id);
+  for (const RegionId o : overlapping(id))
+    if (std::find(stacked.begin(), stacked.end(), o) == stacked.end()) stacked.push_back(o);
   std::vector<std::pair<RegionId, std::uint64_t>> key{{id, own.revision}};
   for (const RegionId n : stacked) key.emplace_back(n, region(n).revision);
   CachedField& cached = fields_[id];
@@ -108,7 +110,12 @@ const LikelihoodField& LocalizationMap::field(RegionId id) const {
 
 RegionId LocalizationMap::handOver(RegionId from, const Eigen::Vector2d& p, double radiusM) const {
   const auto it = regions_.find(from);
-  if (it == regions_.end()) return from;
+  if (it == regions_.end() || holds(it->second, p)) return from;
+  const std::vector<RegionId> next = neighbours(from);
+  for (const RegionId n : next)
+    if (holds(region(n), p)) return n;
+  for (const auto& [id, r] : regions_)
+    if (id != from && holds(r, p)) return id;
   for (const GatewayId id : it->second.gateways) {
     const auto g = gateways_.find(id);
     if (g == gateways_.end()) continue;
@@ -123,12 +130,31 @@ RegionId LocalizationMap::handOver(RegionId from, const Eigen::Vector2d& p, doub
 }
 
 RegionId LocalizationMap::regionAt(const Eigen::Vector2d& p, RegionId hint) const {
-  const auto holds = [&](const LocalizationRegion& r) { return r.freespace.isFreeAt(apply(inverse(r.frame), p)); };
   const auto it = regions_.find(hint);
-  if (it != regions_.end() && holds(it->second)) return hint;
+  if (it != regions_.end() && holds(it->second, p)) return hint;
   for (const auto& [id, r] : regions_)
-    if (holds(r)) return id;
+    if (holds(r, p)) return id;
   return RegionId{};
+}
+
+bool LocalizationMap::holds(const LocalizationRegion& r, const Eigen::Vector2d& p) {
+  return r.freespace.isFreeAt(apply(inverse(r.frame), p));
+}
+
+std::vector<RegionId> LocalizationMap::overlapping(RegionId id) const {
+  const LocalizationRegion& own = region(id);
+  std::vector<RegionId> out;
+  for (const auto& [otherId, other] : regions_) {
+    if (otherId == id) continue;
+    const Pose2D otherToMap = other.frame;
+    std::size_t shared = 0;
+    for (int row = 0; row < other.freespace.height && shared < config_.overlapMinCells; ++row)
+      for (int col = 0; col < other.freespace.width && shared < config_.overlapMinCells; ++col)
+        if (other.freespace.isFree(col, row) && holds(own, apply(otherToMap, other.freespace.cellCenter(col, row))))
+          ++shared;
+    if (shared >= config_.overlapMinCells) out.push_back(otherId);
+  }
+  return out;
 }
 
 std::size_t LocalizationMap::fieldBytes() const {

@@ -75,8 +75,11 @@ class RegionMclTest : public CppUnit::TestFixture {
     CPPUNIT_ASSERT_EQUAL(RegionId{1}, map.handOver(RegionId{1}, Eigen::Vector2d(3.9, 2.0), 3.0));
     CPPUNIT_ASSERT_EQUAL(RegionId{2}, map.handOver(RegionId{1}, Eigen::Vector2d(4.1, 2.0), 3.0));
     CPPUNIT_ASSERT_EQUAL(RegionId{1}, map.handOver(RegionId{2}, Eigen::Vector2d(3.9, 2.0), 3.0));
-    // Far from the door nothing is handed over, whichever crossing point is nearer.
-    CPPUNIT_ASSERT_EQUAL(RegionId{1}, map.handOver(RegionId{1}, Eigen::Vector2d(7.5, 3.5), 3.0));
+    // A particle in the other room's freespace belongs to it, wherever it crossed; one outside
+    // every freespace and far from the door stays where it was.
+    CPPUNIT_ASSERT_EQUAL(RegionId{2}, map.handOver(RegionId{1}, Eigen::Vector2d(7.5, 3.5), 3.0));
+    CPPUNIT_ASSERT_EQUAL(RegionId{1}, map.handOver(RegionId{1}, Eigen::Vector2d(20.0, 20.0), 3.0));
+    CPPUNIT_ASSERT_EQUAL(RegionId{1}, map.handOver(RegionId{1}, Eigen::Vector2d(3.9, 2.0), 3.0));
     // A particle keeps its map pose across the hand-over.
     RegionMcl mcl(MclConfig{}, map, 3);
     mcl.setParticles({{RegionId{1}, Pose2D{3.95, 2.0, 0.0}, 1.0}});
