@@ -82,14 +82,27 @@ class LocalizationMap {
   std::size_t fieldBytes() const;  // memory of the fields built so far
 
  private:
+  // Map point -> region frame, with the rotation's cosine and sine computed once.
+  struct ToRegion {
+    double c = 1.0, s = 0.0, x = 0.0, y = 0.0;
+    Eigen::Vector2d operator()(const Eigen::Vector2d& p) const {
+      const double dx = p.x() - x, dy = p.y() - y;
+      return {c * dx + s * dy, -s * dx + c * dy};
+    }
+  };
+  struct Entry {
+    LocalizationRegion region;
+    ToRegion toRegion;
+    std::vector<RegionId> neighbours;  // regions sharing a kept gateway
+  };
+  bool holds(const Entry& entry, const Eigen::Vector2d& p) const;
+  void relink();  // recomputes every entry's neighbours
+
   BeamModelConfig config_;
-  std::map<RegionId, LocalizationRegion> regions_;
+  std::map<RegionId, Entry> regions_;
   std::map<GatewayId, LocalizationGateway> gateways_;
-  // The regions sharing a kept gateway with `id`.
-  std::vector<RegionId> neighbours(RegionId id) const;
   // The regions whose freespace shares at least BeamModelConfig::overlapMinCells cells with `id`'s.
   std::vector<RegionId> overlapping(RegionId id) const;
-  static bool holds(const LocalizationRegion& region, const Eigen::Vector2d& p);
 
   struct CachedField {
     std::vector<std::pair<RegionId, std::uint64_t>> key;  // the revisions of the region and its neighbours
