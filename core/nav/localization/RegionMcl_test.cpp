@@ -50,6 +50,7 @@ class RegionMclTest : public CppUnit::TestFixture {
   CPPUNIT_TEST(tracksThroughTheDoorIntoTheNextRegion);
   CPPUNIT_TEST(handsParticlesOverIntoTheNeighboursFrame);
   CPPUNIT_TEST(wholeFloorBaselineTracksTheSameWalk);
+  CPPUNIT_TEST(stacksTheLinesOfARegionMappedOverItsFreespace);
   CPPUNIT_TEST(refusesBadInitialPoses);
   CPPUNIT_TEST(doesNotUpdateAStandingRobot);
   CPPUNIT_TEST_SUITE_END();
@@ -98,6 +99,26 @@ class RegionMclTest : public CppUnit::TestFixture {
     CPPUNIT_ASSERT(walk.finalError < 0.05);
     CPPUNIT_ASSERT_EQUAL(RegionId{1}, walk.finalRegion);
     CPPUNIT_ASSERT(walk.traversals.empty());
+  }
+
+  void stacksTheLinesOfARegionMappedOverItsFreespace() {
+    // Region 3 maps room 1 a second time (no gateway joins them, as when the kernel did not
+    // recognise a return); only region 3 holds the top wall. Region 1's field must have it.
+    testing::TwoRooms rooms = testing::twoRooms();
+    RegionView twin = rooms.regions[0];
+    twin.summary.id = RegionId{3};
+    twin.summary.gateways.clear();
+    twin.lines = {{{0, 4}, {4, 4}}};
+    std::erase_if(rooms.regions[0].lines, [](const Segment2& l) { return l.a.y() == 4.0 && l.b.y() == 4.0; });
+    const Eigen::Vector2d onTopWall(2.0, 4.0);
+    std::vector<RegionView> regions = rooms.regions;
+    regions.push_back(twin);
+    const LocalizationMap overlapping = LocalizationMap::fromViews(regions, rooms.gateways, BeamModelConfig{});
+    twin.freespace = FreespaceBitmap::allOccupied(0.15, Eigen::Vector2d::Zero(), 1, 1);
+    regions.back() = twin;
+    const LocalizationMap apart = LocalizationMap::fromViews(regions, rooms.gateways, BeamModelConfig{});
+    CPPUNIT_ASSERT(overlapping.field(RegionId{1}).logLikelihood(onTopWall) > 1.0);
+    CPPUNIT_ASSERT(apart.field(RegionId{1}).logLikelihood(onTopWall) < -1.0);
   }
 
   void refusesBadInitialPoses() {
