@@ -18,6 +18,9 @@ struct BeamModelConfig {
   double zRand = 0.1;
   double maxRangeM = 30.0;     // beams at or beyond this (or without a return) are skipped
   double marginM = 1.0;        // the field reaches this far beyond the lines' bounding box
+  // A region's field also holds the lines of every region whose freespace shares at least this
+  // many (15 cm) cells with its own (LocalizationMap.h).
+  std::size_t overlapMinCells = 45;
   std::size_t beams = 60;      // beams used per update, evenly spread over the scan
   // The log-likelihood of a scan is the beams' sum times this (< 1: beams are not independent;
   // Thrun et al. 6.3.4 "beam correlation").
