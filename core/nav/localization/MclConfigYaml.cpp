@@ -7,7 +7,7 @@ namespace rgnav {
 
 // describe() lists every field (MclConfigYaml.h): a field added to any of the structs stops the
 // build here until it is listed there and in config/modules/localization.yaml.
-static_assert(sizeof(BeamModelConfig) == 8 * sizeof(double));  // (beams: a std::size_t)
+static_assert(sizeof(BeamModelConfig) == 9 * sizeof(double));  // (overlapMinCells, beams: std::size_t)
 static_assert(sizeof(MotionModelConfig) == 4 * sizeof(double));
 static_assert(sizeof(KldConfig) == 6 * sizeof(double));  // (two std::size_t counts)
 static_assert(sizeof(MclConfig) ==

@@ -19,6 +19,7 @@ void describe(V& v, BeamModelConfig& c) {
   v.field("z_rand", c.zRand);
   v.field("max_range_m", c.maxRangeM);
   v.field("margin_m", c.marginM);
+  v.field("overlap_min_cells", c.overlapMinCells);
   v.field("beams", c.beams);
   v.field("beam_weight", c.beamWeight);
 }
