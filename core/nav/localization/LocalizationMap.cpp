@@ -27,7 +27,7 @@ LocalizationMap::LocalizationMap(const BeamModelConfig& config) : config_(config
 void LocalizationMap::setRegion(LocalizationRegion region) {
   const RegionId id = region.id;
   const Pose2D& f = region.frame;
-  regions_[id] = {std::move(region), {std::cos(f.theta), std::sin(f.theta), f.x, f.y}, {}};
+  regions_[id] = {std::move(region), {std::cos(f.theta), std::sin(f.theta), f.x, f.y}, {}, std::nullopt};
   relink();
 }
 
@@ -40,6 +40,7 @@ void LocalizationMap::removeRegion(RegionId id) {
 void LocalizationMap::relink() {
   for (auto& [id, entry] : regions_) {
     entry.neighbours.clear();
+    entry.stacked.reset();
     for (const GatewayId g : entry.region.gateways) {
       const auto it = gateways_.find(g);
       if (it == gateways_.end()) continue;
@@ -96,9 +97,7 @@ std::vector<RegionId> LocalizationMap::regionIds() const {
 
 const LikelihoodField& LocalizationMap::field(RegionId id) const {
   const LocalizationRegion& own = region(id);
-  std::vector<RegionId> stacked = regions_.at(id).neighbours;
-  for (const RegionId o : overlapping(id))
-    if (std::find(stacked.begin(), stacked.end(), o) == stacked.end()) stacked.push_back(o);
+  const std::vector<RegionId>& stacked = stackedWith(regions_.at(id));
   std::vector<std::pair<RegionId, std::uint64_t>> key{{id, own.revision}};
   for (const RegionId n : stacked) key.emplace_back(n, region(n).revision);
   CachedField& cached = fields_[id];
@@ -146,6 +145,16 @@ RegionId LocalizationMap::regionAt(const Eigen::Vector2d& p, RegionId hint) cons
 
 bool LocalizationMap::holds(const Entry& entry, const Eigen::Vector2d& p) const {
   return entry.region.freespace.isFreeAt(entry.toRegion(p));
+}
+
+const std::vector<RegionId>& LocalizationMap::stackedWith(const Entry& entry) const {
+  if (!entry.stacked) {
+    std::vector<RegionId> stacked = entry.neighbours;
+    for (const RegionId o : overlapping(entry.region.id))
+      if (std::find(stacked.begin(), stacked.end(), o) == stacked.end()) stacked.push_back(o);
+    entry.stacked = std::move(stacked);
+  }
+  return *entry.stacked;
 }
 
 std::vector<RegionId> LocalizationMap::overlapping(RegionId id) const {

@@ -19,6 +19,7 @@
 #include <cstdint>
 #include <map>
 #include <memory>
+#include <optional>
 #include <utility>
 #include <vector>
 
@@ -94,9 +95,13 @@ class LocalizationMap {
     LocalizationRegion region;
     ToRegion toRegion;
     std::vector<RegionId> neighbours;  // regions sharing a kept gateway
+    // The regions whose lines the field stacks: the neighbours and the overlapping regions;
+    // worked out on first use after a change of the map.
+    mutable std::optional<std::vector<RegionId>> stacked;
   };
   bool holds(const Entry& entry, const Eigen::Vector2d& p) const;
-  void relink();  // recomputes every entry's neighbours
+  void relink();  // recomputes every entry's neighbours and forgets the stacked regions
+  const std::vector<RegionId>& stackedWith(const Entry& entry) const;
 
   BeamModelConfig config_;
   std::map<RegionId, Entry> regions_;
