@@ -18,6 +18,9 @@ struct BeamModelConfig {
   double zRand = 0.1;
   double maxRangeM = 30.0;     // beams at or beyond this (or without a return) are skipped
   double marginM = 1.0;        // the field reaches this far beyond the lines' bounding box
+  // A region's field also holds the lines of every region whose freespace shares at least this
+  // many (15 cm) cells with its own (LocalizationMap.h).
+  std::size_t overlapMinCells = 45;
   // Beams used per update, evenly spread over the scan. beams and beamWeight (and minParticles)
   // were tuned on the first half of the Intel keyframes ("rgctl eval localization",
   // docs/EVALUATION.md): 120 beams at 0.1 weigh a scan as 60 at 0.2 did, with less noise.

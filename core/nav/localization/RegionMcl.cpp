@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <map>
 #include <numeric>
 
 #include "core/common/Errors.h"
@@ -96,9 +97,12 @@ void RegionMcl::predict(const OdometryMotion& motion) {
 void RegionMcl::correct(const ScanBeams& beams) {
   std::vector<double> logW(particles_.size());
   double best = -std::numeric_limits<double>::infinity();
+  std::map<RegionId, const LikelihoodField*> fields;  // looked up once per region and update
   for (std::size_t i = 0; i < particles_.size(); ++i) {
     const Particle& p = particles_[i];
-    logW[i] = std::log(std::max(p.weight, 1e-300)) + map_.field(p.region).logLikelihood(p.pose, beams);
+    const LikelihoodField*& field = fields[p.region];
+    if (!field) field = &map_.field(p.region);
+    logW[i] = std::log(std::max(p.weight, 1e-300)) + field->logLikelihood(p.pose, beams);
     best = std::max(best, logW[i]);
   }
   double total = 0.0;
@@ -187,8 +191,8 @@ PoseEstimate RegionMcl::estimate() const {
   return *estimate_;
 }
 
-std::vector<GatewayTraversal> RegionMcl::takeTraversals() {
-  std::vector<GatewayTraversal> out;
+std::vector<ConfirmedTraversal> RegionMcl::takeTraversals() {
+  std::vector<ConfirmedTraversal> out;
   out.swap(traversals_);
   return out;
 }

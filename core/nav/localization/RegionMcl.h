@@ -42,7 +42,9 @@ struct PoseEstimate {
   double fitPerBeam = 0.0;
 };
 
-struct GatewayTraversal {
+// (Not "GatewayTraversal": core/gateways/passages/PassageTracker.h has a struct of that name in
+// rgnav, and a program that links both must not see two definitions of one name.)
+struct ConfirmedTraversal {
   GatewayId gateway;
   RegionId from, to;
   DataId scanId = 0;
@@ -71,7 +73,7 @@ class RegionMcl {
   const std::vector<Particle>& particles() const { return particles_; }
   Pose2D mapPose(const Particle& particle) const;
   // Traversals confirmed since the last call (cleared by it).
-  std::vector<GatewayTraversal> takeTraversals();
+  std::vector<ConfirmedTraversal> takeTraversals();
 
  private:
   void predict(const OdometryMotion& motion);
@@ -88,7 +90,7 @@ class RegionMcl {
   std::vector<Particle> particles_;
   std::optional<Pose2D> lastOdometry_;  // the odometry of the last update
   std::optional<PoseEstimate> estimate_;
-  std::vector<GatewayTraversal> traversals_;
+  std::vector<ConfirmedTraversal> traversals_;
   RegionId lastRegion_;  // the region the confirmed traversals have the robot in
 };
 
