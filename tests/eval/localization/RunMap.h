@@ -4,8 +4,6 @@
 // RG Mapping Kernel with the given poses), and the final regions and gateways are taken as the
 // kernel module serves them (FinalMap.h). The map frame is the corrected poses' frame, so the
 // localization's estimates compare directly with them.
-// Kept in its own file: the gateway detector's headers and the localization's both name a
-// GatewayTraversal, so no file includes both.
 #pragma once
 
 #include <map>
