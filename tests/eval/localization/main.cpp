@@ -17,9 +17,12 @@
 //   localization <name> [global map]: scans=… trans_err_m=… … field_mib=…
 //   localization <name>: scans=… trans_err_m=… p95_trans_err_m=… rot_err_deg=… lost=…
 //                         updates_per_s=… particles_mean=… field_mib=… best_particle_…
+//                         region_agreement=… region_changes=… followed=…
 // lost = scans with a translation error over 1 m; updates_per_s = filter updates per second of
 // the filter's own CPU time (one thread). best_particle_* score the heaviest particle (the
-// thesis' estimate) beside the cluster mean (the issue's).
+// thesis' estimate) beside the cluster mean (the issue's). region_agreement: how often the
+// particles' heaviest region is the kernel's region of the scan; followed: of the kernel's
+// changes of region, those the particles made within 10 scans (the hand-over at gateways).
 // --part first|second localizes along one half of the scans only (the map is always built from
 // all of them): the first half is the tuning half of the MclConfig defaults, the second the check.
 #include <algorithm>
