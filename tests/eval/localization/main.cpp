@@ -176,14 +176,18 @@ std::string regionAgreement(const rgnav::LocalizationRun& run, const std::map<rg
   return text;
 }
 
-void writeTrace(std::ostream& out, const char* filter, const rgnav::LocalizationRun& run) {
-  for (const auto& s : run.scans)
+void writeTrace(std::ostream& out, const char* filter, const rgnav::LocalizationRun& run,
+                const std::map<rgnav::DataId, rgnav::RegionId>& scanRegions) {
+  for (const auto& s : run.scans) {
+    const auto mapped = scanRegions.find(s.scanId);
     out << filter << ' ' << s.scanId << ' ' << s.updated << ' ' << s.truth.x << ' ' << s.truth.y << ' '
         << s.truth.theta << ' ' << s.estimate.x << ' ' << s.estimate.y << ' ' << s.estimate.theta << ' '
         << s.error.translationM << ' ' << s.error.rotationRad * 180.0 / M_PI << ' ' << s.bestParticleError.translationM
         << ' ' << s.bestParticleError.rotationRad * 180.0 / M_PI << ' ' << s.region.value() << ' '
         << s.particleRegion.value() << ' ' << s.particles
-        << ' ' << s.clusterWeight << ' ' << s.fitPerBeam << '\n';
+        << ' ' << s.clusterWeight << ' ' << s.fitPerBeam << ' '
+        << (mapped == scanRegions.end() ? rgnav::RegionId() : mapped->second).value() << '\n';
+  }
 }
 
 void evaluate(const Options& options) {
@@ -202,13 +206,14 @@ void evaluate(const Options& options) {
   if (!options.trace.empty()) {
     trace.emplace(options.trace);
     *trace << "# filter scan_id updated true_x true_y true_theta est_x est_y est_theta err_m err_deg best_err_m "
-              "best_err_deg region particle_region particles cluster_weight fit_per_beam\n";
+              "best_err_deg region particle_region particles cluster_weight fit_per_beam "
+              "mapped_region\n";
   }
   if (options.global) {
     const auto floor = rgnav::LocalizationMap::wholeFloor(map.regions, options.setup.config.beam);
     const rgnav::LocalizationRun global = rgnav::localizeAlong(floor, localized, floor.regionIds().front(), options.setup);
     std::cout << "localization " << name << " [global map]: " << figures(global) << std::endl;
-    if (trace) writeTrace(*trace, "global", global);
+    if (trace) writeTrace(*trace, "global", global, run.scanRegions);
   }
   const auto regions = rgnav::LocalizationMap::fromViews(map.regions, map.gateways, options.setup.config.beam);
   std::cout << "localization map: regions=" << regions.regionIds().size()
@@ -217,7 +222,7 @@ void evaluate(const Options& options) {
   const rgnav::LocalizationRun regional = rgnav::localizeAlong(
       regions, localized, start == run.scanRegions.end() ? rgnav::RegionId() : start->second, options.setup);
   if (trace) {
-    writeTrace(*trace, "region", regional);
+    writeTrace(*trace, "region", regional, run.scanRegions);
     if (!trace->flush()) throw rgnav::FileError("cannot write " + options.trace);
   }
   std::cout << "localization " << name << ": " << figures(regional) << regionAgreement(regional, run.scanRegions)
