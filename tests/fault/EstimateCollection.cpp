@@ -1,0 +1,105 @@
+// The localization fault test's client: estimates by scan ID, kills, restarts (see
+// EstimateCollection.h).
+#include "tests/fault/EstimateCollection.h"
+
+#include <signal.h>
+
+#include <chrono>
+#include <stdexcept>
+
+#include "clientlibs/localization/LocalizationClient.h"
+#include "tests/fault/FaultSchedule.h"
+#include "tests/support/cluster/Interruption.h"
+
+namespace rgnav::testing {
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+void pause() { sleepUntilOrInterrupted(Clock::now() + std::chrono::milliseconds(5)); }
+
+// A status counter of the module (0 if it has not set it), asked until the module answers.
+std::uint64_t counter(LocalizationClient& localization, const std::string& name) {
+  for (;;) {
+    try {
+      const ModuleStatusInfo status = localization.status();
+      const auto found = status.counters.find(name);
+      return found == status.counters.end() ? 0 : found->second;
+    } catch (const ModuleUnavailableError&) {
+      pause();
+    } catch (const ModuleFailedError&) {
+      pause();
+    }
+  }
+}
+
+// Every scan's estimate: the one served, or the one before moved on by the odometry.
+void fillEstimates(const AnchoredRun& run, CollectedRun& out) {
+  for (std::size_t i = 0; i < run.scans.size(); ++i) {
+    const auto served = out.served.find(run.scans[i].id);
+    if (served != out.served.end()) {
+      out.estimates.push_back(served->second);
+      continue;
+    }
+    if (i == 0) throw std::runtime_error("the module served no estimate of the first scan: it did not start there");
+    out.estimates.push_back(compose(out.estimates.back(), between(run.scans[i - 1].odometry, run.scans[i].odometry)));
+    ++out.propagated;
+  }
+}
+
+}  // namespace
+
+CollectedRun collectEstimates(TestCluster& cluster, const AnchoredRun& run, int kills, double stallSeconds) {
+  LocalizationClient localization(cluster.clientSettings());
+  const DataId first = run.scans.front().id, last = run.scans.back().id;
+  const auto target = [&](int k) { return first + (last - first) * DataId(k + 1) / DataId(kills + 1); };
+  CollectedRun out;
+  std::int64_t pid = cluster.describe("Localization").pid;
+  const auto began = Clock::now();
+  auto progress = began;
+  DataId next = first;
+  while (next <= last) {
+    if (std::chrono::duration<double>(Clock::now() - progress).count() > stallSeconds)
+      throw std::runtime_error("the module took no scan for " + std::to_string(stallSeconds) + " s (waiting for scan " +
+                               std::to_string(next) + ")");
+    try {
+      const LocalizationStateView state = localization.filterState();
+      if (state.lastScan < next) {
+        pause();
+        continue;
+      }
+      for (; next <= std::min(state.lastScan, last); ++next) {
+        try {
+          out.served.emplace(next, localization.estimateByScan(next).estimate.mapPose);
+        } catch (const NotAvailableError&) {
+          // taken by a process killed before the estimate was fetched, and resumed after it
+        }
+      }
+      progress = Clock::now();
+      if (out.kills == kills || state.lastScan < target(out.kills) ||
+          counter(localization, "checkpoints_written") == 0)
+        continue;
+      ::kill(static_cast<pid_t>(pid), SIGKILL);
+      ++out.kills;
+      out.killedAfter.push_back(state.lastScan);
+      pid = cluster
+                .waitFor("Localization", [&](const ModuleProcessInfo& m) { return isRunning(m) && m.pid != pid; },
+                         "restarted", std::chrono::seconds(60))
+                .pid;
+      const DataId resumedAt = counter(localization, "resumed_after_scan");
+      out.resumedAfter.push_back(resumedAt);
+      out.resumed += resumedAt > 0;
+      progress = Clock::now();
+    } catch (const ModuleUnavailableError&) {
+      pause();
+    } catch (const ModuleFailedError&) {
+      pause();
+    }
+  }
+  out.seconds = std::chrono::duration<double>(Clock::now() - began).count();
+  fillEstimates(run, out);
+  return out;
+}
+
+}  // namespace rgnav::testing

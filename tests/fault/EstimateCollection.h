@@ -1,0 +1,40 @@
+// EstimateCollection: the localization fault test's client (issue 28, `rgctl faulttest
+// localization`): follows the Localization module of a LocalizationSet as it localizes scans
+// 1..lastScan and fetches the estimate of every scan by ID as soon as the module took it
+// (filterState().lastScan), keeping the first one served for each scan (what a client saw live).
+// With `kills` > 0 it SIGKILLs the module that often, spread evenly over the scan IDs: the k-th
+// kill once the module took scan k * lastScan / (kills + 1) and has written a checkpoint of its
+// own since it started (so that every restart has a checkpoint to resume from, not only the
+// first). After each kill it waits for the watchdog's restart and asks the new process which
+// checkpoint it resumed after (its status counter resumed_after_scan; 0: it did not resume).
+// A scan the module never served an estimate for - it took the scan, was killed before the
+// collector fetched it, and resumed from a checkpoint after it - is scored with the estimate of
+// the scan before it moved on by the raw odometry in between (as the module moves an estimate on
+// between its filter updates): counted as `propagated`.
+#pragma once
+
+#include <cstddef>
+#include <map>
+#include <vector>
+
+#include "tests/fault/AnchoredRun.h"
+#include "tests/support/cluster/TestCluster.h"
+
+namespace rgnav::testing {
+
+struct CollectedRun {
+  std::map<DataId, Pose2D> served;  // the first estimate (map pose) the module served per scan
+  std::vector<Pose2D> estimates;    // per scan of the run: served, or propagated
+  std::size_t propagated = 0;
+  int kills = 0;
+  int resumed = 0;                  // restarts that resumed from a checkpoint
+  std::vector<DataId> killedAfter;  // the module's last scan when it was killed
+  std::vector<DataId> resumedAfter; // the checkpoint scan the restarted module resumed at
+  double seconds = 0.0;             // wall time from the first scan to the last estimate
+};
+
+// The cluster runs. Throws std::runtime_error when the module makes no progress for
+// `stallSeconds` or does not serve the first scan's estimate (its start at scan 1 failed).
+CollectedRun collectEstimates(TestCluster& cluster, const AnchoredRun& run, int kills, double stallSeconds);
+
+}  // namespace rgnav::testing
