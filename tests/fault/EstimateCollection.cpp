@@ -19,19 +19,37 @@ using Clock = std::chrono::steady_clock;
 
 void pause() { sleepUntilOrInterrupted(Clock::now() + std::chrono::milliseconds(5)); }
 
-// A status counter of the module (0 if it has not set it), asked until the module answers.
-std::uint64_t counter(LocalizationClient& localization, const std::string& name) {
+// What `call` returns, asked again while the module is away (restarting).
+template <class Call>
+auto answered(const Call& call) {
   for (;;) {
     try {
-      const ModuleStatusInfo status = localization.status();
-      const auto found = status.counters.find(name);
-      return found == status.counters.end() ? 0 : found->second;
+      return call();
     } catch (const ModuleUnavailableError&) {
       pause();
     } catch (const ModuleFailedError&) {
       pause();
     }
   }
+}
+
+// A status counter of the module (0 if it has not set it).
+std::uint64_t counter(LocalizationClient& localization, const std::string& name) {
+  const ModuleStatusInfo status = answered([&] { return localization.status(); });
+  const auto found = status.counters.find(name);
+  return found == status.counters.end() ? 0 : found->second;
+}
+
+// Whether a restarted module resumed the particles of its checkpoint (rather than starting over
+// at the first scan's odometry pose), once it holds particles either way; the checkpoint's scan
+// if it did, 0 if not.
+DataId resumedAt(LocalizationClient& localization, double limitSeconds) {
+  const auto giveUp = Clock::now() + std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(limitSeconds));
+  while (!answered([&] { return localization.filterState().initialised; })) {
+    if (Clock::now() > giveUp) throw std::runtime_error("the restarted module holds no particles");
+    pause();
+  }
+  return counter(localization, "particles_resumed") > 0 ? counter(localization, "resumed_after_scan") : 0;
 }
 
 // Every scan's estimate: the one served, or the one before moved on by the odometry.
@@ -87,9 +105,8 @@ CollectedRun collectEstimates(TestCluster& cluster, const AnchoredRun& run, int 
                 .waitFor("Localization", [&](const ModuleProcessInfo& m) { return isRunning(m) && m.pid != pid; },
                          "restarted", std::chrono::seconds(60))
                 .pid;
-      const DataId resumedAt = counter(localization, "resumed_after_scan");
-      out.resumedAfter.push_back(resumedAt);
-      out.resumed += resumedAt > 0;
+      out.resumedAfter.push_back(resumedAt(localization, stallSeconds));
+      out.resumed += out.resumedAfter.back() > 0;
       progress = Clock::now();
     } catch (const ModuleUnavailableError&) {
       pause();

@@ -5,8 +5,10 @@
 // With `kills` > 0 it SIGKILLs the module that often, spread evenly over the scan IDs: the k-th
 // kill once the module took scan k * lastScan / (kills + 1) and has written a checkpoint of its
 // own since it started (so that every restart has a checkpoint to resume from, not only the
-// first). After each kill it waits for the watchdog's restart and asks the new process which
-// checkpoint it resumed after (its status counter resumed_after_scan; 0: it did not resume).
+// first). After each kill it waits for the watchdog's restart and, once the new process holds
+// particles, asks it whether it resumed them from the checkpoint (its status counters
+// particles_resumed and resumed_after_scan) - a process that loaded the checkpoint but started
+// over at the first scan's odometry pose would localize as well here, so only this tells.
 // A scan the module never served an estimate for - it took the scan, was killed before the
 // collector fetched it, and resumed from a checkpoint after it - is scored with the estimate of
 // the scan before it moved on by the raw odometry in between (as the module moves an estimate on
@@ -27,9 +29,9 @@ struct CollectedRun {
   std::vector<Pose2D> estimates;    // per scan of the run: served, or propagated
   std::size_t propagated = 0;
   int kills = 0;
-  int resumed = 0;                  // restarts that resumed from a checkpoint
+  int resumed = 0;                  // restarts that resumed the checkpoint's particles
   std::vector<DataId> killedAfter;  // the module's last scan when it was killed
-  std::vector<DataId> resumedAfter; // the checkpoint scan the restarted module resumed at
+  std::vector<DataId> resumedAfter; // the checkpoint's scan the restarted module resumed at (0: none)
   double seconds = 0.0;             // wall time from the first scan to the last estimate
 };
 
