@@ -9,6 +9,7 @@
 
 #include "clientlibs/localization/LocalizationClient.h"
 #include "tests/fault/FaultSchedule.h"
+#include "tests/fault/ScanEstimates.h"
 #include "tests/support/cluster/Interruption.h"
 
 namespace rgnav::testing {
@@ -50,20 +51,6 @@ DataId resumedAt(LocalizationClient& localization, double limitSeconds) {
     pause();
   }
   return counter(localization, "particles_resumed") > 0 ? counter(localization, "resumed_after_scan") : 0;
-}
-
-// Every scan's estimate: the one served, or the one before moved on by the odometry.
-void fillEstimates(const AnchoredRun& run, CollectedRun& out) {
-  for (std::size_t i = 0; i < run.scans.size(); ++i) {
-    const auto served = out.served.find(run.scans[i].id);
-    if (served != out.served.end()) {
-      out.estimates.push_back(served->second);
-      continue;
-    }
-    if (i == 0) throw std::runtime_error("the module served no estimate of the first scan: it did not start there");
-    out.estimates.push_back(compose(out.estimates.back(), between(run.scans[i - 1].odometry, run.scans[i].odometry)));
-    ++out.propagated;
-  }
 }
 
 }  // namespace
@@ -115,7 +102,9 @@ CollectedRun collectEstimates(TestCluster& cluster, const AnchoredRun& run, int 
     }
   }
   out.seconds = std::chrono::duration<double>(Clock::now() - began).count();
-  fillEstimates(run, out);
+  ScanEstimates scored = estimatesOfEveryScan(run.scans, out.served);
+  out.estimates = std::move(scored.estimates);
+  out.propagated = scored.propagated;
   return out;
 }
 

@@ -9,10 +9,7 @@
 // particles, asks it whether it resumed them from the checkpoint (its status counters
 // particles_resumed and resumed_after_scan) - a process that loaded the checkpoint but started
 // over at the first scan's odometry pose would localize as well here, so only this tells.
-// A scan the module never served an estimate for - it took the scan, was killed before the
-// collector fetched it, and resumed from a checkpoint after it - is scored with the estimate of
-// the scan before it moved on by the raw odometry in between (as the module moves an estimate on
-// between its filter updates): counted as `propagated`.
+// A scan the module never served an estimate for is scored as ScanEstimates.h says (`propagated`).
 #pragma once
 
 #include <cstddef>
