@@ -45,7 +45,8 @@ std::uint64_t counter(LocalizationClient& localization, const std::string& name)
 // at the first scan's odometry pose), once it holds particles either way; the checkpoint's scan
 // if it did, 0 if not.
 DataId resumedAt(LocalizationClient& localization, double limitSeconds) {
-  const auto giveUp = Clock::now() + std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(limitSeconds));
+  const auto giveUp =
+      Clock::now() + std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(limitSeconds));
   while (!answered([&] { return localization.filterState().initialised; })) {
     if (Clock::now() > giveUp) throw std::runtime_error("the restarted module holds no particles");
     pause();

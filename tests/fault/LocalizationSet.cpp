@@ -10,7 +10,9 @@ namespace rgnav::testing {
 std::unique_ptr<TestCluster> localizationSet(const std::string& log, const AnchoredRun& run) {
   auto cluster = std::make_unique<TestCluster>(
       std::vector<ClusterModule>{
-          {"LogPlayback", {TestCluster::program("rgnav-carmen-playback"), "--log", log, "--speed", "max"}, {"Laser", "Base"}},
+          {"LogPlayback",
+           {TestCluster::program("rgnav-carmen-playback"), "--log", log, "--speed", "max"},
+           {"Laser", "Base"}},
           {"RGMappingKernel",
            {TestCluster::program("rgnav-rgmappingkernel"), "--config", TestCluster::moduleConfig("rgmappingkernel")},
            {"RGMappingKernel"}},
