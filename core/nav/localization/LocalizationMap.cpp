@@ -143,6 +143,11 @@ RegionId LocalizationMap::regionAt(const Eigen::Vector2d& p, RegionId hint) cons
   return RegionId{};
 }
 
+bool LocalizationMap::freeIn(RegionId id, const Eigen::Vector2d& p) const {
+  const auto it = regions_.find(id);
+  return it != regions_.end() && holds(it->second, p);
+}
+
 bool LocalizationMap::holds(const Entry& entry, const Eigen::Vector2d& p) const {
   return entry.region.freespace.isFreeAt(entry.toRegion(p));
 }

@@ -79,6 +79,8 @@ class LocalizationMap {
 
   // The region whose freespace holds map point p, preferring `hint`; none if no region's does.
   RegionId regionAt(const Eigen::Vector2d& p, RegionId hint) const;
+  // Whether region `id`'s freespace holds map point p (false for an unknown region).
+  bool freeIn(RegionId id, const Eigen::Vector2d& p) const;
 
   std::size_t fieldBytes() const;  // memory of the fields built so far
 

@@ -10,9 +10,11 @@
 //      low-variance draws (LowVarianceResampler.h) in shuffled order until the count reaches the
 //      KLD bound of the bins drawn so far (KldSampling.h).
 // The estimate is the weighted mean of the heaviest cluster (ParticleClusters.h); the best
-// particle is reported beside it (the thesis' choice). When the estimate lies
-// traversalConfirmM beyond a gateway (nearer the other side's crossing point by that much) in a
-// new region, the traversal is reported once (confirmedTraversals), as evidence for the kernel.
+// particle is reported beside it (the thesis' choice). When the estimate's region changes to a
+// region joined to the previous one by a gateway, and the estimate lies traversalConfirmM from
+// that gateway's centre and outside the previous region's freespace ("a reasonable distance
+// behind the gateway"), the traversal is reported once (takeTraversals), as evidence for the
+// kernel; a change into a region mapped over the same place (no gateway between) is none.
 // Kidnapping and global localization are not this class's: the caller reseeds with setParticles.
 #pragma once
 
@@ -80,7 +82,7 @@ class RegionMcl {
   void correct(const ScanBeams& beams);
   void resample();
   void refreshEstimate(DataId scanId, const ScanBeams& beams);
-  // Confirms a traversal when the estimate lies traversalConfirmM beyond a gateway of lastRegion_.
+  // Confirms a traversal when the estimate's region changed from lastRegion_ across a gateway.
   void checkTraversal(DataId scanId);
 
   MclConfig config_;
