@@ -105,5 +105,5 @@ function(rgnav_test_environment test timeout)
     return()
   endif()
   set_tests_properties(${test} PROPERTIES TIMEOUT ${timeout}
-    ENVIRONMENT "RGNAV_SHARED=${RGNAV_SHARED_DIR};RGNAV_BIN=${CMAKE_BINARY_DIR}/bin;RGNAV_ROOT=${CMAKE_SOURCE_DIR}")
+    ENVIRONMENT "RGNAV_SHARED=${RGNAV_SHARED_DIR};RGNAV_BIN=${CMAKE_BINARY_DIR}/bin;RGNAV_ROOT=${CMAKE_SOURCE_DIR};RGNAV_BUILT=1")
 endfunction()
