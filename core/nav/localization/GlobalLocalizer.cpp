@@ -1,0 +1,182 @@
+// Global localization and kidnap recovery around a RegionMcl (see GlobalLocalizer.h).
+#include "core/nav/localization/GlobalLocalizer.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "core/common/Errors.h"
+
+namespace rgnav {
+
+namespace {
+
+void validate(const GlobalLocalizerConfig& c) {
+  if (c.seedCandidates == 0 || c.seedParticles < c.seedCandidates || !(c.seedSigmaXyM > 0.0) ||
+      !(c.seedSigmaThetaRad > 0.0) || !(c.reseedTravelM > 0.0) || c.kidnapUpdates == 0 || c.seedScoreMargin < 0.0 ||
+      c.historyToleranceM < 0.0 || c.historyTolerancePerM < 0.0 || !(c.historyToleranceRad > 0.0))
+    throw ConfigError("GlobalLocalizer: counts, spreads and tolerances must be positive");
+}
+
+bool near(const Pose2D& a, const Pose2D& b, double distanceM, double angleRad) {
+  return std::hypot(a.x - b.x, a.y - b.y) <= distanceM && std::abs(normalizeAngle(a.theta - b.theta)) <= angleRad;
+}
+
+}  // namespace
+
+GlobalLocalizer::GlobalLocalizer(const GlobalLocalizerConfig& config, const MclConfig& mcl, const LocalizationMap& map,
+                                 const std::vector<RegionView>& regions, const std::vector<GatewayView>& gateways,
+                                 std::uint64_t seed)
+    : config_(config),
+      map_(map),
+      recognizer_(config.recognition, mcl.beam, map, regions, gateways),
+      mcl_(mcl, map, seed),
+      rng_(seed ^ 0x9e3779b97f4a7c15ull),
+      recent_(config.observation) {
+  validate(config);
+  for (const GatewayView& g : gateways) {
+    if (g.neutralised || g.sideA.isNone() || g.sideB.isNone() || g.sideA == g.sideB) continue;
+    neighbours_[g.sideA].insert(g.sideB);
+    neighbours_[g.sideB].insert(g.sideA);
+  }
+}
+
+std::optional<PoseEstimate> GlobalLocalizer::estimate() const {
+  if (state_ == LocalizerState::kSearching) return std::nullopt;
+  return mcl_.estimate();
+}
+
+std::vector<GatewayTraversal> GlobalLocalizer::takeTraversals() { return std::exchange(traversals_, {}); }
+
+void GlobalLocalizer::relocalize() {
+  state_ = LocalizerState::kSearching;
+  recent_.keepNewest();
+  candidates_.clear();
+  candidatesOdometry_.reset();
+  searchStart_.reset();
+  searchTurnRad_ = 0.0;
+  traversedInto_.reset();
+  lowFitUpdates_ = 0;
+}
+
+void GlobalLocalizer::update(const LaserScan& scan) {
+  recent_.add(scan);
+  double step = 0.0, turn = 0.0;
+  if (lastOdometry_) {
+    const Pose2D motion = between(*lastOdometry_, scan.odometry);
+    step = std::hypot(motion.x, motion.y);
+    turn = std::abs(motion.theta);
+  }
+  lastOdometry_ = scan.odometry;
+  if (state_ == LocalizerState::kSearching) {
+    if (!searchStart_) searchStart_ = scan.odometry;
+    searchTurnRad_ += turn;
+    if (recent_.travelM() >= config_.firstRecognitionTravelM || searchTurnRad_ >= config_.firstRecognitionTurnRad)
+      recognizeAndSeed(scan);
+    return;
+  }
+  const bool updated = mcl_.update(scan);
+  travelSinceSeedM_ += step;
+  travelSinceRecognitionM_ += step;
+  for (const GatewayTraversal& t : mcl_.takeTraversals()) {
+    traversedInto_ = t.to;
+    if (state_ == LocalizerState::kLocalized) traversals_.push_back(t);
+  }
+  if (!updated) return;
+  if (state_ == LocalizerState::kConverging)
+    checkConvergence(scan);
+  else
+    watchForKidnap();
+}
+
+void GlobalLocalizer::checkConvergence(const LaserScan& scan) {
+  const PoseEstimate e = mcl_.estimate();
+  const double spread = std::sqrt(std::max(0.0, e.covariance(0, 0) + e.covariance(1, 1)));
+  if (travelSinceSeedM_ >= config_.confirmTravelM && e.clusterWeight >= config_.localizedClusterWeight &&
+      spread <= config_.localizedSpreadM && e.fitPerBeam >= config_.localizedFitPerBeam) {
+    state_ = LocalizerState::kLocalized;
+    lowFitUpdates_ = 0;
+    return;
+  }
+  if (travelSinceRecognitionM_ >= config_.reseedTravelM) recognizeAndSeed(scan);
+}
+
+void GlobalLocalizer::watchForKidnap() {
+  lowFitUpdates_ = mcl_.estimate().fitPerBeam < config_.kidnapFitPerBeam ? lowFitUpdates_ + 1 : 0;
+  if (lowFitUpdates_ < config_.kidnapUpdates) return;
+  ++kidnaps_;
+  relocalize();
+}
+
+bool GlobalLocalizer::adjacent(RegionId a, RegionId b) const {
+  if (a == b) return true;
+  const auto it = neighbours_.find(a);
+  return it != neighbours_.end() && it->second.count(b) != 0;
+}
+
+std::vector<PoseCandidate> GlobalLocalizer::pruneByHistory(std::vector<PoseCandidate> fresh, const Pose2D& odometry) const {
+  if (candidates_.empty() || !candidatesOdometry_) return fresh;
+  const Pose2D motion = between(*candidatesOdometry_, odometry);
+  const double tolerance = config_.historyToleranceM + config_.historyTolerancePerM * travelSinceRecognitionM_;
+  std::vector<PoseCandidate> kept;
+  for (const PoseCandidate& c : fresh) {
+    const bool fits = std::any_of(candidates_.begin(), candidates_.end(), [&](const PoseCandidate& previous) {
+      return adjacent(previous.region, c.region) &&
+             near(compose(previous.mapPose, motion), c.mapPose, tolerance, config_.historyToleranceRad);
+    });
+    if (fits) kept.push_back(c);
+  }
+  if (traversedInto_) {
+    std::vector<PoseCandidate> throughGateway;
+    std::copy_if(kept.begin(), kept.end(), std::back_inserter(throughGateway),
+                 [&](const PoseCandidate& c) { return adjacent(*traversedInto_, c.region); });
+    if (!throughGateway.empty()) kept = std::move(throughGateway);
+  }
+  return kept.empty() ? fresh : kept;
+}
+
+void GlobalLocalizer::recognizeAndSeed(const LaserScan& scan) {
+  const LocalObservation observation = recent_.observation();
+  std::vector<PoseCandidate> fresh = recognizer_.recognize(observation);
+  ++recognitions_;
+  // The filter's own hypothesis competes with the recognizer's.
+  if (state_ == LocalizerState::kConverging) {
+    const PoseEstimate e = mcl_.estimate();
+    fresh.push_back(recognizer_.candidateAt(e.region, e.regionPose, observation));
+    std::sort(fresh.begin(), fresh.end(), [](const PoseCandidate& a, const PoseCandidate& b) { return a.score > b.score; });
+  }
+  if (fresh.empty()) return;
+  std::vector<PoseCandidate> kept = pruneByHistory(std::move(fresh), scan.odometry);
+  const double best = kept.front().score;
+  std::vector<PoseCandidate> selected;
+  for (const PoseCandidate& c : kept)
+    if (selected.size() < config_.seedCandidates && c.score >= best - config_.seedScoreMargin) selected.push_back(c);
+  candidates_ = selected;
+  candidatesOdometry_ = scan.odometry;
+  travelSinceRecognitionM_ = 0.0;
+  traversedInto_.reset();
+  seed(selected);
+  mcl_.update(scan);
+  if (state_ == LocalizerState::kSearching) {
+    state_ = LocalizerState::kConverging;
+    travelSinceSeedM_ = 0.0;
+  }
+}
+
+void GlobalLocalizer::seed(const std::vector<PoseCandidate>& candidates) {
+  std::normal_distribution<double> normal(0.0, 1.0);
+  const double best = candidates.front().score;
+  const std::size_t each = config_.seedParticles / candidates.size();
+  std::vector<Particle> particles;
+  particles.reserve(each * candidates.size());
+  for (const PoseCandidate& c : candidates) {
+    const double weight = std::exp(config_.seedFitGain * (c.score - best));
+    for (std::size_t i = 0; i < each; ++i)
+      particles.push_back({c.region,
+                           {c.regionPose.x + config_.seedSigmaXyM * normal(rng_), c.regionPose.y + config_.seedSigmaXyM * normal(rng_),
+                            normalizeAngle(c.regionPose.theta + config_.seedSigmaThetaRad * normal(rng_))},
+                           weight});
+  }
+  mcl_.setParticles(std::move(particles));
+}
+
+}  // namespace rgnav

@@ -1,0 +1,131 @@
+// GlobalLocalizer: localization without a known start, and recovery from kidnapping (issue 28,
+// "global localization by region recognition"; thesis 5.3 leaves it as future work). It wraps a
+// RegionMcl and decides where its particles go:
+//   searching:  no particles. Scans gather in RecentScans (LocalObservation.h); once the robot
+//               has moved firstRecognitionTravelM (or turned firstRecognitionTurnRad) by
+//               odometry, RegionRecognizer ranks pose candidates over all regions and the filter
+//               is seeded (setParticles) only around the best of them: at most seedCandidates
+//               poses whose score lies within seedScoreMargin of the best, seedParticles split
+//               evenly among them, drawn with seedSigma, weighted exp(seedFitGain * (score - best))
+//               so that the filter starts from the recognizer's ranking without trusting it fully.
+//   converging: the filter runs. Each time the robot has travelled reseedTravelM more, the
+//               recognizer runs again on the grown observation and the action history prunes
+//               its candidates: a new candidate survives only if some candidate of the previous
+//               recognition, moved by the odometry travelled since, lands within
+//               historyToleranceM + historyTolerancePerM * travel and historyToleranceRad of it,
+//               in the same region or one that shares a gateway with the previous candidate's
+//               (the RG graph's adjacency). If nothing survives, the new candidates are taken
+//               unpruned (the earlier recognition had it wrong). The filter is reseeded with the
+//               survivors. The filter's confirmed traversals (RegionMcl::takeTraversals) also
+//               prune: after one, candidates must lie in the region it led into or next to it.
+//               Localized once the travel since the first seed is at least confirmTravelM (two
+//               recognitions agreed), the heaviest cluster holds localizedClusterWeight of the
+//               weight, its position spread is below localizedSpreadM, and the fit per beam is
+//               at least localizedFitPerBeam.
+//   localized:  the filter tracks. Kidnapping is detected when the estimate's fit per beam
+//               (PoseEstimate::fitPerBeam: the odometry-predicted, corrected pose no longer
+//               explains the scan) stays below kidnapFitPerBeam for kidnapUpdates updates in a
+//               row; then the older scans are dropped (they show the place before the jump), the
+//               particles cleared and the search starts again.
+// Thresholds and weights: the fit per beam of a correctly localized robot in the simulated IPA
+// floors is about 0.5 to 1.3 (a beam on a line scores log(zHit N(0) + zRand / maxRange) = 1.5
+// with the shipped beam model; furniture and glimpses through doors pull the mean down), a lost
+// or kidnapped one about -2 to -4 (log(zRand / maxRange) = -5.7 for a beam far from every line);
+// -0.5 separates them with margin on both sides, and 8 updates (40 cm of travel at one update per
+// 5 cm) ride out a few odd scans. The seed spread (0.15 m, 5 degrees) is about the recognizer's
+// refinement error; a score margin of 1.0 per point keeps the candidates that are still
+// plausible after the correlation (a wrong region typically scores 1 to 3 lower per point).
+// Deliberate difference from a plain MCL with uniform seeding: particles never go where the
+// recognizer saw no fit, so a floor of thousands of square metres needs a few thousand particles,
+// not hundreds of thousands.
+#pragma once
+
+#include <cstdint>
+#include <map>
+#include <optional>
+#include <set>
+#include <vector>
+
+#include "core/nav/localization/RegionMcl.h"
+#include "core/nav/localization/RegionRecognition.h"
+
+namespace rgnav {
+
+struct GlobalLocalizerConfig {
+  LocalObservationConfig observation;
+  RecognitionConfig recognition;
+  double firstRecognitionTravelM = 1.0;
+  double firstRecognitionTurnRad = M_PI;
+  std::size_t seedCandidates = 12;
+  double seedScoreMargin = 1.0;
+  std::size_t seedParticles = 3000;
+  double seedSigmaXyM = 0.15;
+  double seedSigmaThetaRad = 5.0 * M_PI / 180.0;
+  double seedFitGain = 3.0;
+  double reseedTravelM = 1.5;
+  double historyToleranceM = 0.5;
+  double historyTolerancePerM = 0.1;
+  double historyToleranceRad = 15.0 * M_PI / 180.0;
+  double confirmTravelM = 3.0;
+  double localizedClusterWeight = 0.8;
+  double localizedSpreadM = 0.2;
+  double localizedFitPerBeam = 0.0;
+  double kidnapFitPerBeam = -0.5;
+  std::size_t kidnapUpdates = 8;
+};
+
+enum class LocalizerState { kSearching, kConverging, kLocalized };
+
+class GlobalLocalizer {
+ public:
+  // `map` must outlive the localizer; `regions` and `gateways` are the views it was made from.
+  // Throws ConfigError for a bad configuration.
+  GlobalLocalizer(const GlobalLocalizerConfig& config, const MclConfig& mcl, const LocalizationMap& map,
+                  const std::vector<RegionView>& regions, const std::vector<GatewayView>& gateways, std::uint64_t seed);
+
+  // The next scan with its odometry pose.
+  void update(const LaserScan& scan);
+  // Forget the pose and search again (e.g. the robot was carried away and the caller knows it).
+  void relocalize();
+
+  LocalizerState state() const { return state_; }
+  bool localized() const { return state_ == LocalizerState::kLocalized; }
+  // The filter's estimate while it runs (converging or localized).
+  std::optional<PoseEstimate> estimate() const;
+  const RegionMcl& filter() const { return mcl_; }
+  // The candidates of the latest recognition after pruning (best first).
+  const std::vector<PoseCandidate>& candidates() const { return candidates_; }
+  std::size_t recognitions() const { return recognitions_; }
+  std::size_t kidnapsDetected() const { return kidnaps_; }
+  // Traversals the filter confirmed while localized, since the last call (for the kernel).
+  std::vector<GatewayTraversal> takeTraversals();
+
+ private:
+  void recognizeAndSeed(const LaserScan& scan);
+  std::vector<PoseCandidate> pruneByHistory(std::vector<PoseCandidate> fresh, const Pose2D& odometry) const;
+  bool adjacent(RegionId a, RegionId b) const;
+  void seed(const std::vector<PoseCandidate>& candidates);
+  void checkConvergence(const LaserScan& scan);
+  void watchForKidnap();
+
+  GlobalLocalizerConfig config_;
+  const LocalizationMap& map_;
+  RegionRecognizer recognizer_;
+  RegionMcl mcl_;
+  std::mt19937_64 rng_;
+  std::map<RegionId, std::set<RegionId>> neighbours_;
+  RecentScans recent_;
+  LocalizerState state_ = LocalizerState::kSearching;
+  std::optional<Pose2D> searchStart_;       // odometry when the search began
+  double searchTurnRad_ = 0.0;              // odometry turn since then
+  std::optional<Pose2D> lastOdometry_;
+  std::vector<PoseCandidate> candidates_;   // of the last recognition
+  std::optional<Pose2D> candidatesOdometry_;  // odometry at the last recognition
+  double travelSinceSeedM_ = 0.0, travelSinceRecognitionM_ = 0.0;
+  std::optional<RegionId> traversedInto_;   // the region the filter's last traversal led into
+  std::vector<GatewayTraversal> traversals_;
+  std::size_t lowFitUpdates_ = 0;
+  std::size_t recognitions_ = 0, kidnaps_ = 0;
+};
+
+}  // namespace rgnav
