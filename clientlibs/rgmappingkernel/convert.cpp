@@ -86,6 +86,20 @@ RGNav::NamedObject toIdl(const RgMappingKernel::NamedObject& o) { return {o.regi
 
 RgMappingKernel::NamedObject fromIdl(const RGNav::NamedObject& o) { return {RegionId(o.region), fromIdl(o.namedAt)}; }
 
+namespace {
+
+constexpr CORBA::ULong kNoCrossingIdl = 0xFFFFFFFFu;
+
+CORBA::ULong crossingToIdl(std::size_t crossing) {
+  return crossing == kNoCrossing ? kNoCrossingIdl : static_cast<CORBA::ULong>(crossing);
+}
+
+std::size_t crossingFromIdl(CORBA::ULong crossing) {
+  return crossing == kNoCrossingIdl ? kNoCrossing : std::size_t{crossing};
+}
+
+}  // namespace
+
 RGNav::RgGateway toIdl(const GatewayView& g) {
   RGNav::RgGateway out;
   out.id = g.id.value();
@@ -98,13 +112,15 @@ RGNav::RgGateway toIdl(const GatewayView& g) {
   out.sideA = g.sideA.value();
   out.sideB = g.sideB.value();
   out.traversals = static_cast<CORBA::ULong>(g.traversals);
+  out.sideACrossing = crossingToIdl(g.sideCrossings[kSideA]);
+  out.sideBCrossing = crossingToIdl(g.sideCrossings[kSideB]);
   return out;
 }
 
 GatewayView fromIdl(const RGNav::RgGateway& g) {
   return {GatewayId(g.id), DetectorGatewayId(g.detectorId), fromIdl(g.classes), static_cast<bool>(g.door),
           static_cast<bool>(g.neutralised), fromIdl(g.gatewayPoints), fromIdl(g.crossingPoints), RegionId(g.sideA),
-          RegionId(g.sideB), g.traversals};
+          RegionId(g.sideB), g.traversals, {crossingFromIdl(g.sideACrossing), crossingFromIdl(g.sideBCrossing)}};
 }
 
 RGNav::RgGraphInfo toIdl(const GraphView& graph) {

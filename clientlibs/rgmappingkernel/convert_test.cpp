@@ -60,7 +60,7 @@ class RgMappingKernelConvertTest : public CppUnit::TestFixture {
 
   void gatewayGraphPathRoundTrip() {
     const GatewayView g{GatewayId{3}, DetectorGatewayId{9}, {{"Narrow-Passage", 0.8}}, true, false, {{1, 2}, {1, 3}},
-                       {{0.5, 2.5}, {1.5, 2.5}}, RegionId{1}, RegionId{4}, 2};
+                       {{0.5, 2.5}, {1.5, 2.5}}, RegionId{1}, RegionId{4}, 2, {0, kNoCrossing}};
     CPPUNIT_ASSERT(fromIdl(toIdl(g)) == g);
     GraphView graph;
     graph.nodes = {{GatewayId{3}, 0, RegionId{1}, {0.5, 2.5}}, {GatewayId{3}, 1, RegionId{4}, {1.5, 2.5}}};

@@ -18,7 +18,7 @@
 #include <cstdint>
 #include <map>
 #include <memory>
-#include <optional>
+#include <utility>
 #include <vector>
 
 #include "core/nav/localization/LikelihoodField.h"
@@ -81,8 +81,11 @@ class LocalizationMap {
   BeamModelConfig config_;
   std::map<RegionId, LocalizationRegion> regions_;
   std::map<GatewayId, LocalizationGateway> gateways_;
+  // The regions sharing a kept gateway with `id`.
+  std::vector<RegionId> neighbours(RegionId id) const;
+
   struct CachedField {
-    std::uint64_t revision = 0;
+    std::vector<std::pair<RegionId, std::uint64_t>> key;  // the revisions of the region and its neighbours
     std::unique_ptr<LikelihoodField> field;
   };
   mutable std::map<RegionId, CachedField> fields_;

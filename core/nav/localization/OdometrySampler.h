@@ -9,7 +9,7 @@
 
 #include "core/common/Pose2D.h"
 #include "core/nav/localization/MclConfig.h"
-#include "core/sim/motion/OdometryMotion.h"
+#include "core/common/OdometryMotion.h"
 
 namespace rgnav {
 

@@ -78,6 +78,7 @@ class RegionMcl {
   void correct(const ScanBeams& beams);
   void resample();
   void refreshEstimate(DataId scanId, const ScanBeams& beams);
+  // Confirms a traversal when the estimate lies traversalConfirmM beyond a gateway of lastRegion_.
   void checkTraversal(DataId scanId);
 
   MclConfig config_;
@@ -88,6 +89,7 @@ class RegionMcl {
   std::optional<Pose2D> lastOdometry_;  // the odometry of the last update
   std::optional<PoseEstimate> estimate_;
   std::vector<GatewayTraversal> traversals_;
+  RegionId lastRegion_;  // the region the confirmed traversals have the robot in
 };
 
 }  // namespace rgnav

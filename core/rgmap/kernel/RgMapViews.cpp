@@ -45,7 +45,8 @@ std::vector<GatewayView> gatewayViews(const RgMappingKernel& kernel) {
     const PlacedGateway placed = placeGateway(g);
     out.push_back({id, g.record.id, g.record.classes, g.door(), g.neutralised, placed.gatewayPoints,
                    placed.crossingPoints, g.sides[kSideA].region, g.sides[kSideB].region,
-                   g.traversalsFrom[0] + g.traversalsFrom[1]});
+                   g.traversalsFrom[0] + g.traversalsFrom[1],
+                   {g.sides[kSideA].crossing, g.sides[kSideB].crossing}});
   }
   return out;
 }

@@ -5,6 +5,7 @@
 #pragma once
 
 #include <Eigen/Geometry>
+#include <array>
 #include <string>
 #include <vector>
 
@@ -66,6 +67,8 @@ struct GatewayView {
   std::vector<Eigen::Vector2d> gatewayPoints, crossingPoints;
   RegionId sideA, sideB;
   std::size_t traversals = 0;
+  // Side A's and side B's crossing point: indices into crossingPoints; kNoCrossing: not known yet.
+  std::array<std::size_t, 2> sideCrossings{kNoCrossing, kNoCrossing};
 
   friend bool operator==(const GatewayView&, const GatewayView&) = default;
 };

@@ -18,7 +18,7 @@
 #include <vector>
 
 #include "core/common/Pose2D.h"
-#include "core/sim/motion/OdometryMotion.h"
+#include "core/common/OdometryMotion.h"
 
 namespace rgnav {
 

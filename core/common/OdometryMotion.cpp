@@ -1,6 +1,6 @@
 // OdometryMotion: the decomposition (Probabilistic Robotics, Table 5.6, first three lines) and the
 // pose update that inverts it.
-#include "core/sim/motion/OdometryMotion.h"
+#include "core/common/OdometryMotion.h"
 
 #include <cmath>
 

@@ -1,0 +1,72 @@
+// LikelihoodField (LikelihoodField.h): lines rasterised with cv::line, cv::distanceTransform
+// (DIST_L2, DIST_MASK_PRECISE) for the distance of every cell centre to the nearest line cell.
+#include "core/nav/localization/LikelihoodField.h"
+
+#include <algorithm>
+#include <cmath>
+#include <opencv2/core.hpp>
+#include <opencv2/imgproc.hpp>
+
+namespace rgnav {
+namespace {
+
+// The largest field side in cells (a 200 m floor at 5 cm).
+constexpr int kMaxSide = 4000;
+
+}  // namespace
+
+LikelihoodField::LikelihoodField(std::span<const Segment2> lines, const BeamModelConfig& config) : config_(config) {
+  MclConfig whole;
+  whole.beam = config;
+  validate(whole);
+  const double randomP = config.zRand / config.maxRangeM;
+  outside_ = static_cast<float>(std::log(randomP));
+  if (lines.empty()) return;
+  Eigen::Vector2d lo = lines.front().a, hi = lines.front().a;
+  for (const Segment2& s : lines) {
+    lo = lo.cwiseMin(s.a).cwiseMin(s.b);
+    hi = hi.cwiseMax(s.a).cwiseMax(s.b);
+  }
+  const double res = config.resolutionM;
+  origin_ = lo - Eigen::Vector2d::Constant(config.marginM);
+  width_ = std::min(kMaxSide, static_cast<int>(std::ceil((hi.x() - lo.x() + 2.0 * config.marginM) / res)) + 1);
+  height_ = std::min(kMaxSide, static_cast<int>(std::ceil((hi.y() - lo.y() + 2.0 * config.marginM) / res)) + 1);
+  cv::Mat free(height_, width_, CV_8U, cv::Scalar(255));
+  const auto cell = [&](const Eigen::Vector2d& p) {
+    return cv::Point(static_cast<int>(std::floor((p.x() - origin_.x()) / res)),
+                     static_cast<int>(std::floor((p.y() - origin_.y()) / res)));
+  };
+  for (const Segment2& s : lines) cv::line(free, cell(s.a), cell(s.b), cv::Scalar(0), 1, cv::LINE_8);
+  cv::Mat distance;
+  cv::distanceTransform(free, distance, cv::DIST_L2, cv::DIST_MASK_PRECISE, CV_32F);
+  const double norm = config.zHit / (std::sqrt(2.0 * M_PI) * config.sigmaHitM);
+  const double twoSigma2 = 2.0 * config.sigmaHitM * config.sigmaHitM;
+  logP_.resize(static_cast<std::size_t>(width_) * static_cast<std::size_t>(height_));
+  for (int row = 0; row < height_; ++row) {
+    const float* d = distance.ptr<float>(row);
+    for (int col = 0; col < width_; ++col) {
+      const double m = d[col] * res;
+      logP_[static_cast<std::size_t>(row) * static_cast<std::size_t>(width_) + static_cast<std::size_t>(col)] =
+          static_cast<float>(std::log(norm * std::exp(-m * m / twoSigma2) + randomP));
+    }
+  }
+}
+
+double LikelihoodField::logLikelihood(const Eigen::Vector2d& point) const {
+  const double res = config_.resolutionM;
+  const double fx = (point.x() - origin_.x()) / res, fy = (point.y() - origin_.y()) / res;
+  if (!(fx >= 0.0 && fy >= 0.0 && fx < width_ && fy < height_)) return outside_;
+  return logP_[static_cast<std::size_t>(fy) * static_cast<std::size_t>(width_) + static_cast<std::size_t>(fx)];
+}
+
+double LikelihoodField::logLikelihood(const Pose2D& robotPose, const ScanBeams& beams) const {
+  const double c = std::cos(robotPose.theta), s = std::sin(robotPose.theta);
+  double sum = 0.0;
+  for (const Eigen::Vector2d& e : beams.endpoints)
+    sum += logLikelihood(Eigen::Vector2d(robotPose.x + c * e.x() - s * e.y(), robotPose.y + s * e.x() + c * e.y()));
+  return sum * config_.beamWeight;
+}
+
+std::size_t LikelihoodField::bytes() const { return logP_.size() * sizeof(float); }
+
+}  // namespace rgnav
