@@ -80,7 +80,7 @@ const RegionRecognizer::RegionRaster& RegionRecognizer::raster(RegionId region) 
   RegionRaster r;
   r.origin = lo - Eigen::Vector2d(pad, pad);
   const int cols = int(std::ceil((hi.x() - lo.x() + 2.0 * pad) / cell)), rows = int(std::ceil((hi.y() - lo.y() + 2.0 * pad) / cell));
-  const auto centre = [&](int c, int row) { return r.origin + Eigen::Vector2d((c + 0.5) * cell, (row + 0.5) * cell); };
+  const auto centre = [&](int c, int row) -> Eigen::Vector2d { return r.origin + Eigen::Vector2d((c + 0.5) * cell, (row + 0.5) * cell); };
   cv::Mat logP(rows, cols, CV_32F);
   for (int row = 0; row < rows; ++row)
     for (int c = 0; c < cols; ++c) logP.at<float>(row, c) = float(field.logLikelihood(centre(c, row)));
