@@ -101,10 +101,26 @@ void GlobalLocalizer::checkConvergence(const LaserScan& scan) {
 }
 
 void GlobalLocalizer::watchForKidnap() {
-  lowFitUpdates_ = mcl_.estimate().fitPerBeam < config_.kidnapFitPerBeam ? lowFitUpdates_ + 1 : 0;
+  const PoseEstimate e = mcl_.estimate();
+  lowFitUpdates_ = e.fitPerBeam < config_.kidnapFitPerBeam ? lowFitUpdates_ + 1 : 0;
   if (lowFitUpdates_ < config_.kidnapUpdates) return;
-  ++kidnaps_;
-  relocalize();
+  lowFitUpdates_ = 0;
+  // A low fit alone may be a view into space the map does not hold; the newest scans must fit a
+  // pose elsewhere clearly better than the estimate.
+  const LocalObservation newest = recent_.observation(config_.kidnapCheckTravelM);
+  const std::vector<PoseCandidate> elsewhere = recognizer_.recognize(newest);
+  if (elsewhere.empty()) return;
+  const PoseCandidate here = recognizer_.candidateAt(e.region, e.regionPose, newest);
+  const PoseCandidate& best = elsewhere.front();
+  if (best.score < here.score + config_.kidnapScoreMargin) return;
+  if (std::hypot(best.mapPose.x - e.mapPose.x, best.mapPose.y - e.mapPose.y) > config_.kidnapDistanceM) {
+    ++kidnaps_;
+    relocalize();
+    return;
+  }
+  ++corrections_;
+  seed({best});
+  mcl_.update(recent_.newest());
 }
 
 bool GlobalLocalizer::adjacent(RegionId a, RegionId b) const {

@@ -22,11 +22,18 @@
 //               recognitions agreed), the heaviest cluster holds localizedClusterWeight of the
 //               weight, its position spread is below localizedSpreadM, and the fit per beam is
 //               at least localizedFitPerBeam.
-//   localized:  the filter tracks. Kidnapping is detected when the estimate's fit per beam
+//   localized:  the filter tracks. Kidnapping is suspected when the estimate's fit per beam
 //               (PoseEstimate::fitPerBeam: the odometry-predicted, corrected pose no longer
 //               explains the scan) stays below kidnapFitPerBeam for kidnapUpdates updates in a
-//               row; then the older scans are dropped (they show the place before the jump), the
-//               particles cleared and the search starts again.
+//               row, and confirmed when the recognizer, run on the newest scans only (the last
+//               kidnapCheckTravelM of travel: those after the jump), finds a pose more than
+//               kidnapDistanceM away that scores kidnapScoreMargin per point better than the
+//               estimate does on the same scans (a low fit alone is often a view into space the
+//               map does not hold). Then the older scans are dropped (they show the place before
+//               the jump), and the search starts again. If the better pose lies within
+//               kidnapDistanceM, the filter has drifted (typically into a region whose line map
+//               lacks walls the scan sees): it is reseeded around that pose and stays localized
+//               (corrections()).
 // Thresholds and weights: the fit per beam of a correctly localized robot in the simulated IPA
 // floors is about 0.5 to 1.3 (a beam on a line scores log(zHit N(0) + zRand / maxRange) = 1.5
 // with the shipped beam model; furniture and glimpses through doors pull the mean down), a lost
@@ -72,6 +79,9 @@ struct GlobalLocalizerConfig {
   double localizedFitPerBeam = 0.0;
   double kidnapFitPerBeam = -0.5;
   std::size_t kidnapUpdates = 8;
+  double kidnapCheckTravelM = 0.3;
+  double kidnapScoreMargin = 1.0;
+  double kidnapDistanceM = 1.0;
 };
 
 enum class LocalizerState { kSearching, kConverging, kLocalized };
@@ -97,6 +107,7 @@ class GlobalLocalizer {
   const std::vector<PoseCandidate>& candidates() const { return candidates_; }
   std::size_t recognitions() const { return recognitions_; }
   std::size_t kidnapsDetected() const { return kidnaps_; }
+  std::size_t corrections() const { return corrections_; }
   // Traversals the filter confirmed while localized, since the last call (for the kernel).
   std::vector<GatewayTraversal> takeTraversals();
 
@@ -125,7 +136,7 @@ class GlobalLocalizer {
   std::optional<RegionId> traversedInto_;   // the region the filter's last traversal led into
   std::vector<GatewayTraversal> traversals_;
   std::size_t lowFitUpdates_ = 0;
-  std::size_t recognitions_ = 0, kidnaps_ = 0;
+  std::size_t recognitions_ = 0, kidnaps_ = 0, corrections_ = 0;
 };
 
 }  // namespace rgnav

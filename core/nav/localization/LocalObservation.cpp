@@ -2,6 +2,7 @@
 #include "core/nav/localization/LocalObservation.h"
 
 #include <cmath>
+#include <limits>
 #include <numeric>
 
 #include "core/common/Errors.h"
@@ -29,18 +30,27 @@ void RecentScans::keepNewest() {
   }
 }
 
+const LaserScan& RecentScans::newest() const {
+  if (scans_.empty()) throw NotAvailableError("RecentScans: no scan yet");
+  return scans_.back();
+}
+
 double RecentScans::travelM() const {
   // The first scan's step leads from a scan already dropped.
   return travelTo_.empty() ? 0.0 : std::accumulate(travelTo_.begin() + 1, travelTo_.end(), 0.0);
 }
 
-LocalObservation RecentScans::observation() const {
+LocalObservation RecentScans::observation() const { return observation(std::numeric_limits<double>::infinity()); }
+
+LocalObservation RecentScans::observation(double maxTravelM) const {
   if (scans_.empty()) throw NotAvailableError("RecentScans: no scan yet");
+  std::size_t first = scans_.size() - 1;
+  for (double travel = 0.0; first > 0 && travel + travelTo_[first] <= maxTravelM; --first) travel += travelTo_[first];
   LocalObservation out;
   const Pose2D newest = scans_.back().odometry;
   const LineExtractor extractor;
   SegmentId nextSegment = 1;
-  for (std::size_t i = 0; i < scans_.size(); ++i) {
+  for (std::size_t i = first; i < scans_.size(); ++i) {
     const LaserScan& scan = scans_[i];
     const Pose2D pose = between(newest, scan.odometry);
     for (const ScanPoint& p : scanPoints(scan, pose)) out.points.push_back(p.position);
@@ -51,8 +61,8 @@ LocalObservation RecentScans::observation() const {
       out.lines.insert(out.lines.end(), std::make_move_iterator(lines.begin()), std::make_move_iterator(lines.end()));
     }
   }
-  out.travelM = travelM();
-  out.scans = scans_.size();
+  out.travelM = std::accumulate(travelTo_.begin() + std::ptrdiff_t(first) + 1, travelTo_.end(), 0.0);
+  out.scans = scans_.size() - first;
   return out;
 }
 

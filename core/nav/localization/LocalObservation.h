@@ -44,9 +44,12 @@ class RecentScans {
   void clear() { scans_.clear(); }
 
   std::size_t size() const { return scans_.size(); }
+  const LaserScan& newest() const;  // NotAvailableError if empty
   double travelM() const;  // odometry travel from the oldest to the newest scan
-  // The observation in the frame of the newest scan. NotAvailableError if empty.
+  // The observation in the frame of the newest scan: of all scans held, or of the newest ones
+  // whose odometry travel spans at most maxTravelM (at least the newest). NotAvailableError if empty.
   LocalObservation observation() const;
+  LocalObservation observation(double maxTravelM) const;
 
  private:
   LocalObservationConfig config_;

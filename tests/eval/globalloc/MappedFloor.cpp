@@ -5,17 +5,21 @@
 
 namespace rgnav {
 
-MappedFloor mapFloor(const std::string& floorPlanPath, const std::optional<HmmClassifier>& classifier) {
+MappedFloor mapFloor(const std::string& floorPlanPath, const std::optional<HmmClassifier>& classifier, bool truePoses) {
   MappedFloor floor;
   floor.world = loadWorld(floorPlanPath);
   if (!floor.world.truth) throw FileError(floorPlanPath + ": no ground-truth rooms beside it");
   MappingRunSetup setup;
   setup.pipeline = shippedPipelineConfig();
+  setup.truePoses = truePoses;
   setup.atEnd = [&](const RgMappingKernel& kernel) {
     for (const auto& [id, region] : kernel.state().regions) floor.regions.push_back(regionView(kernel, id));
     floor.gateways = gatewayViews(kernel);
   };
-  floor.mapToWorld = mapRoomTour(floor.world.grid, *floor.world.truth, setup, classifier).mapToWorld;
+  const MappingRun run = mapRoomTour(floor.world.grid, *floor.world.truth, setup, classifier);
+  floor.mapToWorld = run.mapToWorld;
+  floor.slamErrorMeanM = run.poseErrors.meanM;
+  floor.slamErrorMaxM = run.poseErrors.maxM;
   return floor;
 }
 

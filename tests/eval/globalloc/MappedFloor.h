@@ -19,9 +19,12 @@ struct MappedFloor {
   std::vector<RegionView> regions;
   std::vector<GatewayView> gateways;
   Pose2D mapToWorld;
+  double slamErrorMeanM = 0.0, slamErrorMaxM = 0.0;  // the mapped scans' corrected poses against the truth
 };
 
 // FileError if the floor plan has no ground-truth rooms beside it (the tour needs them).
-MappedFloor mapFloor(const std::string& floorPlanPath, const std::optional<HmmClassifier>& classifier);
+// truePoses: the kernel maps with the true poses instead of SLAM's (MappingRunSetup::truePoses),
+// so that the trials measure the localizer alone, not the map's distortion.
+MappedFloor mapFloor(const std::string& floorPlanPath, const std::optional<HmmClassifier>& classifier, bool truePoses);
 
 }  // namespace rgnav

@@ -47,6 +47,7 @@ struct Options {
   std::string models = "config/gateways/gateway-hmms.txt";
   std::string split = "config/eval/ipa-split.yaml";
   bool list = false;
+  bool truePoses = false;
 };
 
 constexpr double kToleranceM = 0.3, kToleranceRad = 10.0 * M_PI / 180.0;
@@ -55,6 +56,9 @@ constexpr double kClaimM = 1.0, kClaimRad = 30.0 * M_PI / 180.0;
 struct Totals {
   std::size_t maps = 0, trials = 0, success = 0, wrong = 0, wrongClaims = 0, firstTop1 = 0, firstAny = 0;
   std::vector<double> travel;  // to convergence, successful trials
+  // The filter's fit per beam at scans where its estimate was within the tolerance / over 1 m off
+  // (what the kidnap threshold must separate).
+  std::vector<double> fitRight, fitWrong;
 
   void add(const Totals& o) {
     maps += o.maps;
@@ -65,13 +69,16 @@ struct Totals {
     firstTop1 += o.firstTop1;
     firstAny += o.firstAny;
     travel.insert(travel.end(), o.travel.begin(), o.travel.end());
+    fitRight.insert(fitRight.end(), o.fitRight.begin(), o.fitRight.end());
+    fitWrong.insert(fitWrong.end(), o.fitWrong.begin(), o.fitWrong.end());
   }
   double share(std::size_t n) const { return trials == 0 ? 0.0 : double(n) / double(trials); }
-  double travelMedian() const {
-    if (travel.empty()) return 0.0;
-    std::vector<double> t = travel;
-    std::nth_element(t.begin(), t.begin() + std::ptrdiff_t(t.size() / 2), t.end());
-    return t[t.size() / 2];
+  double travelMedian() const { return quantile(travel, 0.5); }
+  static double quantile(std::vector<double> v, double q) {
+    if (v.empty()) return 0.0;
+    const auto at = v.begin() + std::ptrdiff_t(q * double(v.size() - 1));
+    std::nth_element(v.begin(), at, v.end());
+    return *at;
   }
 };
 
@@ -82,8 +89,9 @@ bool within(const Pose2D& a, const Pose2D& b, double m, double rad) {
 struct Trial {
   bool success = false, wrong = false, wrongClaim = false, firstTop1 = false, firstAny = false;
   double travelToConverge = 0.0, travel = 0.0;
-  std::size_t recognitions = 0;
+  std::size_t recognitions = 0, kidnaps = 0, corrections = 0, localizedScans = 0, goodScans = 0;
   double finalErrorM = 0.0;
+  std::vector<double> fitRight, fitWrong;
 };
 
 Trial runTrial(const LoadedWorld& world, const GridPlanner& planner, const std::vector<bool>& reachable,
@@ -117,9 +125,15 @@ Trial runTrial(const LoadedWorld& world, const GridPlanner& planner, const std::
         return within(p.mapPose, truth, 0.5, 15.0 * M_PI / 180.0);
       });
     }
+    if (const std::optional<PoseEstimate> f = localizer.estimate()) {
+      if (within(f->mapPose, truth, kToleranceM, kToleranceRad)) t.fitRight.push_back(f->fitPerBeam);
+      if (!within(f->mapPose, truth, kClaimM, kClaimRad)) t.fitWrong.push_back(f->fitPerBeam);
+    }
     const std::optional<PoseEstimate> e = localizer.localized() ? localizer.estimate() : std::nullopt;
     const bool good = e && within(e->mapPose, truth, kToleranceM, kToleranceRad);
     if (e && !within(e->mapPose, truth, kClaimM, kClaimRad)) t.wrongClaim = true;
+    t.localizedScans += e.has_value();
+    t.goodScans += good;
     if (good && !inStreak) t.travelToConverge = t.travel;
     inStreak = good;
     t.success = good;
@@ -127,11 +141,13 @@ Trial runTrial(const LoadedWorld& world, const GridPlanner& planner, const std::
     t.finalErrorM = e ? std::hypot(e->mapPose.x - truth.x, e->mapPose.y - truth.y) : -1.0;
   }
   t.recognitions = localizer.recognitions();
+  t.kidnaps = localizer.kidnapsDetected();
+  t.corrections = localizer.corrections();
   return t;
 }
 
 Totals evaluate(const std::string& mapPath, const Options& options, const std::optional<HmmClassifier>& classifier) {
-  const MappedFloor floor = mapFloor(mapPath, classifier);
+  const MappedFloor floor = mapFloor(mapPath, classifier, options.truePoses);
   const LoadedWorld& world = floor.world;
   const std::vector<RegionView>& regions = floor.regions;
   const std::vector<GatewayView>& gateways = floor.gateways;
@@ -152,16 +168,24 @@ Totals evaluate(const std::string& mapPath, const Options& options, const std::o
     totals.firstTop1 += t.firstTop1;
     totals.firstAny += t.firstAny;
     if (t.success) totals.travel.push_back(t.travelToConverge);
+    totals.fitRight.insert(totals.fitRight.end(), t.fitRight.begin(), t.fitRight.end());
+    totals.fitWrong.insert(totals.fitWrong.end(), t.fitWrong.begin(), t.fitWrong.end());
     if (options.list)
-      std::printf("#   trial %zu: %s travel=%.1f m converged_after=%.1f m recognitions=%zu final_error_m=%.2f%s first_top1=%d\n",
+      std::printf("#   trial %zu: %s travel=%.1f m converged_after=%.1f m recognitions=%zu kidnaps_detected=%zu corrections=%zu "
+                  "localized_scans=%zu within_scans=%zu final_error_m=%.2f%s first_top1=%d\n",
                   i, t.success ? "success" : t.wrong ? "WRONG" : "not localized", t.travel, t.travelToConverge,
-                  t.recognitions, t.finalErrorM, t.wrongClaim ? " wrong_claim" : "", int(t.firstTop1));
+                  t.recognitions, t.kidnaps, t.corrections, t.localizedScans, t.goodScans, t.finalErrorM,
+                  t.wrongClaim ? " wrong_claim" : "", int(t.firstTop1));
   }
-  std::printf("%-28s regions=%zu gateways=%zu trials=%zu success=%.3f wrong_convergence=%.3f wrong_claims=%zu "
-              "first_top1=%.3f first_any=%.3f travel_to_converge_m_median=%.2f\n",
-              ipaMapName(mapPath).c_str(), regions.size(), gateways.size(), totals.trials, totals.share(totals.success),
+  std::printf("%-28s regions=%zu gateways=%zu slam_error_m=%.2f/%.2f trials=%zu success=%.3f wrong_convergence=%.3f wrong_claims=%zu "
+              "first_top1=%.3f first_any=%.3f travel_to_converge_m_median=%.2f fit_right_p1/p5/p50=%.2f/%.2f/%.2f "
+              "fit_wrong_p50/p95/p99=%.2f/%.2f/%.2f\n",
+              ipaMapName(mapPath).c_str(), regions.size(), gateways.size(), floor.slamErrorMeanM, floor.slamErrorMaxM, totals.trials, totals.share(totals.success),
               totals.share(totals.wrong), totals.wrongClaims, totals.share(totals.firstTop1),
-              totals.share(totals.firstAny), totals.travelMedian());
+              totals.share(totals.firstAny), totals.travelMedian(), Totals::quantile(totals.fitRight, 0.01),
+              Totals::quantile(totals.fitRight, 0.05), Totals::quantile(totals.fitRight, 0.5),
+              Totals::quantile(totals.fitWrong, 0.5), Totals::quantile(totals.fitWrong, 0.95),
+              Totals::quantile(totals.fitWrong, 0.99));
   std::fflush(stdout);
   return totals;
 }
@@ -180,7 +204,9 @@ int main(int argc, char** argv) {
       ("trial-seconds", po::value(&options.trialSeconds)->default_value(options.trialSeconds), "simulated seconds per trial")
       ("models", po::value(&options.models)->default_value(options.models), "gateway HMMs (used if the file exists)")
       ("split", po::value(&options.split)->default_value(options.split), "the IPA maps' tuning/check split")
-      ("list", po::bool_switch(&options.list), "print every trial");
+      ("list", po::bool_switch(&options.list), "print every trial")
+      ("true-poses", po::bool_switch(&options.truePoses),
+       "map with the true poses instead of SLAM (the trials then measure the localizer without the map's distortion)");
   po::positional_options_description positional;
   positional.add("map", -1);
   try {
