@@ -58,6 +58,12 @@ void GlobalLocalizer::relocalize() {
   lowFitUpdates_ = 0;
 }
 
+void GlobalLocalizer::setPose(const Pose2D& mapPose, const Eigen::Vector3d& sigma) {
+  mcl_.setPose(mapPose, sigma, RegionId{});
+  state_ = LocalizerState::kLocalized;
+  lowFitUpdates_ = 0;
+}
+
 void GlobalLocalizer::update(const LaserScan& scan) {
   recent_.add(scan);
   double step = 0.0, turn = 0.0;
@@ -114,8 +120,15 @@ void GlobalLocalizer::watchForKidnap() {
   const PoseCandidate& best = elsewhere.front();
   if (best.score < here.score + config_.kidnapScoreMargin) return;
   if (std::hypot(best.mapPose.x - e.mapPose.x, best.mapPose.y - e.mapPose.y) > config_.kidnapDistanceM) {
+    // Kidnapped, or a view the map explains badly here and well elsewhere: the older scans show
+    // the place before a jump and go; the estimate stays one of the hypotheses the filter weighs.
     ++kidnaps_;
-    relocalize();
+    recent_.keepNewest();
+    std::vector<PoseCandidate> hypotheses{here};
+    for (const PoseCandidate& c : elsewhere)
+      if (hypotheses.size() < config_.seedCandidates && c.score >= best.score - config_.seedScoreMargin)
+        hypotheses.push_back(c);
+    startConverging(hypotheses, recent_.newest());
     return;
   }
   ++corrections_;
@@ -166,21 +179,26 @@ void GlobalLocalizer::recognizeAndSeed(const LaserScan& scan) {
   std::vector<PoseCandidate> selected;
   for (const PoseCandidate& c : kept)
     if (selected.size() < config_.seedCandidates && c.score >= best - config_.seedScoreMargin) selected.push_back(c);
-  candidates_ = selected;
+  if (state_ == LocalizerState::kSearching) travelSinceSeedM_ = 0.0;
+  startConverging(selected, scan);
+}
+
+void GlobalLocalizer::startConverging(const std::vector<PoseCandidate>& hypotheses, const LaserScan& scan) {
+  if (state_ == LocalizerState::kLocalized) travelSinceSeedM_ = 0.0;
+  state_ = LocalizerState::kConverging;
+  candidates_ = hypotheses;
   candidatesOdometry_ = scan.odometry;
   travelSinceRecognitionM_ = 0.0;
   traversedInto_.reset();
-  seed(selected);
+  seed(hypotheses);
   mcl_.update(scan);
-  if (state_ == LocalizerState::kSearching) {
-    state_ = LocalizerState::kConverging;
-    travelSinceSeedM_ = 0.0;
-  }
 }
 
 void GlobalLocalizer::seed(const std::vector<PoseCandidate>& candidates) {
   std::normal_distribution<double> normal(0.0, 1.0);
-  const double best = candidates.front().score;
+  const double best = std::max_element(candidates.begin(), candidates.end(), [](const PoseCandidate& a, const PoseCandidate& b) {
+                        return a.score < b.score;
+                      })->score;
   const std::size_t each = config_.seedParticles / candidates.size();
   std::vector<Particle> particles;
   particles.reserve(each * candidates.size());

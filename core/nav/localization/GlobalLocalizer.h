@@ -30,7 +30,10 @@
 //               kidnapDistanceM away that scores kidnapScoreMargin per point better than the
 //               estimate does on the same scans (a low fit alone is often a view into space the
 //               map does not hold). Then the older scans are dropped (they show the place before
-//               the jump), and the search starts again. If the better pose lies within
+//               the jump) and the filter is reseeded around the estimate and the recognizer's
+//               candidates alike (at most seedCandidates, within seedScoreMargin of the best):
+//               converging again, the filter decides between staying and the jump, and the usual
+//               recognitions every reseedTravelM go on from there. If the better pose lies within
 //               kidnapDistanceM, the filter has drifted (typically into a region whose line map
 //               lacks walls the scan sees): it is reseeded around that pose and stays localized
 //               (corrections()).
@@ -97,6 +100,9 @@ class GlobalLocalizer {
   void update(const LaserScan& scan);
   // Forget the pose and search again (e.g. the robot was carried away and the caller knows it).
   void relocalize();
+  // An initial guess the caller trusts (RegionMcl::setPose): localized from the next scan on, the
+  // kidnap watch guarding it. NotAvailableError if no region holds the pose.
+  void setPose(const Pose2D& mapPose, const Eigen::Vector3d& sigma);
 
   LocalizerState state() const { return state_; }
   bool localized() const { return state_ == LocalizerState::kLocalized; }
@@ -116,6 +122,8 @@ class GlobalLocalizer {
   std::vector<PoseCandidate> pruneByHistory(std::vector<PoseCandidate> fresh, const Pose2D& odometry) const;
   bool adjacent(RegionId a, RegionId b) const;
   void seed(const std::vector<PoseCandidate>& candidates);
+  // Seeds the filter with `hypotheses` and runs it on `scan`; converging from here.
+  void startConverging(const std::vector<PoseCandidate>& hypotheses, const LaserScan& scan);
   void checkConvergence(const LaserScan& scan);
   void watchForKidnap();
 

@@ -11,6 +11,7 @@
 #include "core/gateways/classify/HmmClassifier.h"
 #include "core/rgmap/kernel/RgMapViews.h"
 #include "core/sim/LoadedWorld.h"
+#include "tests/eval/globalloc/LocalTruth.h"
 
 namespace rgnav {
 
@@ -20,6 +21,7 @@ struct MappedFloor {
   std::vector<GatewayView> gateways;
   Pose2D mapToWorld;
   double slamErrorMeanM = 0.0, slamErrorMaxM = 0.0;  // the mapped scans' corrected poses against the truth
+  std::vector<ScanPlacement> scans;  // every mapped scan's true and corrected position (LocalTruth.h)
 };
 
 // FileError if the floor plan has no ground-truth rooms beside it (the tour needs them).

@@ -5,7 +5,8 @@
 // robot is put at a random reachable free pose (seeded), the localizer is not told, and the robot
 // wanders to random goals (RandomGoalDriver.h) for --trial-seconds of simulated time, the
 // localizer taking every scan with its odometry. The truth is the simulator's pose put into the
-// map frame (MappingRun::mapToWorld).
+// map where the map holds that place (LocalTruth.h: fitted to the mapped scans nearby, so that the
+// SLAM map's own distortion, slam_error_m, is not counted against the localizer).
 //   success:           at the end the localizer says it is localized and its estimate has been
 //                      within 0.3 m and 10 degrees of the truth since some scan on;
 //   wrong_convergence: at the end the localizer says it is localized but its estimate is not
@@ -95,7 +96,7 @@ struct Trial {
 };
 
 Trial runTrial(const LoadedWorld& world, const GridPlanner& planner, const std::vector<bool>& reachable,
-               const Pose2D& mapToWorld, const LocalizationMap& map, const std::vector<RegionView>& regions,
+               const LocalTruth& truthInMap, const LocalizationMap& map, const std::vector<RegionView>& regions,
                const std::vector<GatewayView>& gateways, const Options& options, std::uint64_t seed) {
   RandomGoalDriver driver(planner, reachable, seed);
   const WorldPoint at = driver.randomPoint();
@@ -105,7 +106,6 @@ Trial runTrial(const LoadedWorld& world, const GridPlanner& planner, const std::
   simulation.seed = seed;
   Simulation sim(world.grid, simulation, start);
   GlobalLocalizer localizer(GlobalLocalizerConfig{}, MclConfig{}, map, regions, gateways, seed);
-  const Pose2D worldToMap = inverse(mapToWorld);
   Trial t;
   bool inStreak = false, firstSeen = false;
   while (sim.time() < options.trialSeconds) {
@@ -116,7 +116,7 @@ Trial runTrial(const LoadedWorld& world, const GridPlanner& planner, const std::
     if (!step.scan) continue;
     step.scan->sensorPose = step.scan->odometry;
     localizer.update(*step.scan);
-    const Pose2D truth = compose(worldToMap, step.truePose);
+    const Pose2D truth = truthInMap.toMap(step.truePose);
     if (!firstSeen && !localizer.candidates().empty()) {
       firstSeen = true;
       const auto& c = localizer.candidates();
@@ -153,13 +153,14 @@ Totals evaluate(const std::string& mapPath, const Options& options, const std::o
   const std::vector<GatewayView>& gateways = floor.gateways;
   const MclConfig mcl;
   const LocalizationMap map = LocalizationMap::fromViews(regions, gateways, mcl.beam);
+  const LocalTruth truthInMap(floor.scans, floor.mapToWorld);
   const GridPlanner planner(world.grid);
   const Pose2D tourStart = openestPose(world.grid);
   const std::vector<bool> reachable = planner.reachableFrom({tourStart.x, tourStart.y});
   Totals totals;
   totals.maps = 1;
   for (std::size_t i = 0; i < options.trials; ++i) {
-    const Trial t = runTrial(world, planner, reachable, floor.mapToWorld, map, regions, gateways, options,
+    const Trial t = runTrial(world, planner, reachable, truthInMap, map, regions, gateways, options,
                              options.seed * 1000003 + i);
     ++totals.trials;
     totals.success += t.success;
