@@ -79,11 +79,11 @@ struct GlobalLocalizerConfig {
   double confirmTravelM = 3.0;
   double localizedClusterWeight = 0.8;
   double localizedSpreadM = 0.2;
-  double localizedFitPerBeam = 0.0;
+  double localizedFitPerBeam = -0.5;
   double kidnapFitPerBeam = -0.5;
-  std::size_t kidnapUpdates = 8;
-  double kidnapCheckTravelM = 0.3;
-  double kidnapScoreMargin = 1.0;
+  std::size_t kidnapUpdates = 20;
+  double kidnapCheckTravelM = 0.8;
+  double kidnapScoreMargin = 1.5;
   double kidnapDistanceM = 1.0;
 };
 
