@@ -15,8 +15,9 @@
 //               historyToleranceM + historyTolerancePerM * travel and historyToleranceRad of it,
 //               in the same region or one that shares a gateway with the previous candidate's
 //               (the RG graph's adjacency). If nothing survives, the new candidates are taken
-//               unpruned (the earlier recognition had it wrong). The filter is reseeded with the
-//               survivors. The filter's confirmed traversals (RegionMcl::takeTraversals) also
+//               unpruned (the earlier recognition had it wrong). The filter's own estimate
+//               competes as one more candidate, scored the same way. The filter is reseeded with
+//               the survivors. The filter's confirmed traversals (RegionMcl::takeTraversals) also
 //               prune: after one, candidates must lie in the region it led into or next to it.
 //               Localized once the travel since the first seed is at least confirmTravelM (two
 //               recognitions agreed), the heaviest cluster holds localizedClusterWeight of the
@@ -37,14 +38,22 @@
 //               kidnapDistanceM, the filter has drifted (typically into a region whose line map
 //               lacks walls the scan sees): it is reseeded around that pose and stays localized
 //               (corrections()).
-// Thresholds and weights: the fit per beam of a correctly localized robot in the simulated IPA
-// floors is about 0.5 to 1.3 (a beam on a line scores log(zHit N(0) + zRand / maxRange) = 1.5
-// with the shipped beam model; furniture and glimpses through doors pull the mean down), a lost
-// or kidnapped one about -2 to -4 (log(zRand / maxRange) = -5.7 for a beam far from every line);
-// -0.5 separates them with margin on both sides, and 8 updates (40 cm of travel at one update per
-// 5 cm) ride out a few odd scans. The seed spread (0.15 m, 5 degrees) is about the recognizer's
-// refinement error; a score margin of 1.0 per point keeps the candidates that are still
-// plausible after the correlation (a wrong region typically scores 1 to 3 lower per point).
+// Thresholds and weights, as chosen on Freiburg52 (a tuning map of the IPA split, rgctl eval
+// globalloc --list prints the fit figures): a beam on a line scores log(zHit N(0) + zRand /
+// maxRange) = 1.5 with the shipped beam model, one far from every line log(zRand / maxRange) =
+// -5.7. Correctly localized in the SLAM-built map, the fit per beam had median 1.0, 5th
+// percentile -0.7, 1st -1.2 (views into unmapped space, furniture, the map's own distortion);
+// estimates over 1 m off had median -1.0 but a 95th percentile of 0.9: a wrong place in a
+// building of alike rooms fits as well as the right one, so the fit alone can neither confirm a
+// pose nor prove a kidnapping. Hence localizedFitPerBeam = kidnapFitPerBeam = -0.5 only as a
+// gate, kidnapUpdates = 20 (1 m of travel at one update per 5 cm) to ride out unmapped views,
+// and the confirmation by recognition on the last 0.8 m (long enough to tell rooms apart, short
+// enough to hold only scans after a jump that the 1 m of low fit followed), with a margin of 1.5
+// per point (a wrong region typically scores 1 to 3 lower). confirmTravelM = 3 m means two
+// recognitions 1.5 m apart agreed through the action history. The seed spread (0.15 m, 5 degrees)
+// is about the recognizer's refinement error; a score margin of 1.0 per point keeps the
+// candidates still plausible after the correlation; seedFitGain 3 weighs a candidate 1 per point
+// worse by e^-3 at the start, so the filter starts from the ranking without trusting it fully.
 // Deliberate difference from a plain MCL with uniform seeding: particles never go where the
 // recognizer saw no fit, so a floor of thousands of square metres needs a few thousand particles,
 // not hundreds of thousands.
