@@ -41,12 +41,13 @@
 // Thresholds and weights, as chosen on Freiburg52 (a tuning map of the IPA split, rgctl eval
 // globalloc --list prints the fit figures): a beam on a line scores log(zHit N(0) + zRand /
 // maxRange) = 1.5 with the shipped beam model, one far from every line log(zRand / maxRange) =
-// -5.7. Correctly localized in the SLAM-built map, the fit per beam had median 1.0, 5th
-// percentile -0.7, 1st -1.2 (views into unmapped space, furniture, the map's own distortion);
-// estimates over 1 m off had median -1.0 but a 95th percentile of 0.9: a wrong place in a
+// -5.7. Correctly localized in the SLAM-built map, the fit per beam had median 0.9, 5th
+// percentile -1.0, 1st -2.0 (views into unmapped space, furniture, the map's own distortion);
+// estimates over 1 m off had median -0.5 but a 95th percentile of 0.9: a wrong place in a
 // building of alike rooms fits as well as the right one, so the fit alone can neither confirm a
 // pose nor prove a kidnapping. Hence localizedFitPerBeam = kidnapFitPerBeam = -0.5 only as a
-// gate, kidnapUpdates = 20 (1 m of travel at one update per 5 cm) to ride out unmapped views,
+// gate, kidnapUpdates = 20 (1 m of travel at one update per 5 cm, where more than 5 % of the
+// correct scans fall below the gate) to ride out unmapped views,
 // and the confirmation by recognition on the last 0.8 m (long enough to tell rooms apart, short
 // enough to hold only scans after a jump that the 1 m of low fit followed), with a margin of 1.5
 // per point (a wrong region typically scores 1 to 3 lower). confirmTravelM = 3 m means two
