@@ -117,6 +117,12 @@ void RgMappingKernelClient::reportDoorState(GatewayId door, bool traversable, st
   connection_.call("reportDoorState", [&](Kernel k) { k->reportDoorState(id, door.value(), traversable); });
 }
 
+void RgMappingKernelClient::reportTraversal(GatewayId gateway, RegionId from, RegionId to, DataId scanId) {
+  const RequestId request = newRequestId();
+  connection_.call("reportTraversal",
+                   [&](Kernel k) { k->reportTraversal(request, gateway.value(), from.value(), to.value(), scanId); });
+}
+
 RgMapEventBatch RgMappingKernelClient::eventsSince(RgMapEventId afterId, std::uint32_t maxCount) {
   return connection_.call("eventsSince", [&](Kernel k) {
     RGNav::RgMapEventBatch_var b = k->eventsSince(afterId, maxCount, consumer_.c_str());

@@ -1,5 +1,6 @@
 // RgMappingKernelClient: the RG Map of the RGMappingKernel module: regions with descriptions,
-// gateways, the RG graph and paths, names, merges and their undoing, door states, the map's
+// gateways, the RG graph and paths, names, merges and their undoing, door states, confirmed
+// gateway traversals, the map's
 // events by ID, export. Names, merges, undoing them and door states are not idempotent: each call
 // carries a new random request ID, kept over its retries, so that the kernel acts on it once
 // however often a lost answer makes the client ask (RGMappingKernel.idl). Errors:
@@ -42,6 +43,9 @@ class RgMappingKernelClient : public ModuleClientOf<RGNav::RGMappingKernel> {
   // makes a new request ID; a module that relays a request of its own passes that ID on, so that
   // the kernel acts once however often the relayed request is retried.
   void reportDoorState(GatewayId door, bool traversable, std::uint64_t request = 0);
+  // The robot was confirmed to have passed `gateway` from region `from` into `to` at scan
+  // `scanId` (the Localization module's evidence); the kernel counts it once per request.
+  void reportTraversal(GatewayId gateway, RegionId from, RegionId to, DataId scanId);
   RgMapEventBatch eventsSince(RgMapEventId afterId, std::uint32_t maxCount);
   // The files written, one per line; `directory` is relative to the kernel's export root (""
   // for the root) or absolute inside it (RGMappingKernel.idl). Describing and drawing a large map takes long (an outdoor

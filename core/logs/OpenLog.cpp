@@ -4,7 +4,10 @@
 #include <algorithm>
 #include <array>
 #include <cctype>
+#include <cstdint>
 #include <string_view>
+
+#include "core/common/Errors.h"
 
 #include "core/logs/CarmenLogReader.h"
 #include "core/logs/IntelJsonLogReader.h"
@@ -25,6 +28,19 @@ std::unique_ptr<LogSource> openLog(const std::string& path, const LogReaderOptio
     return std::make_unique<IntelJsonLogReader>(path, options);
   }
   return std::make_unique<CarmenLogReader>(path, options);
+}
+
+std::vector<LaserScan> readLaserScans(const std::string& path, const LogReaderOptions& options, std::size_t maxScans) {
+  const auto log = openLog(path, options);
+  const std::size_t limit = maxScans == 0 ? SIZE_MAX : maxScans;
+  std::vector<LaserScan> scans;
+  while (scans.size() < limit) {
+    auto record = log->next();
+    if (!record) break;
+    if (auto* scan = std::get_if<LaserScan>(&*record)) scans.push_back(std::move(*scan));
+  }
+  if (scans.empty()) throw InvalidArgumentError("no scans in " + path);
+  return scans;
 }
 
 }  // namespace rgnav

@@ -115,6 +115,17 @@ void RgMappingKernelImpl::reportDoorState(RGNav::RequestId requestId, RGNav::Gat
   });
 }
 
+void RgMappingKernelImpl::reportTraversal(RGNav::RequestId requestId, RGNav::GatewayId gateway, RGNav::RegionId from,
+                                          RGNav::RegionId to, RGNav::DataId scanId) {
+  serve(kArgs, [&] {
+    wire::requireId(requestId, "requestId");
+    wire::requireId(gateway, "gateway");
+    wire::requireId(from, "from");
+    wire::requireId(to, "to");
+    service_.reportTraversal(requestId, GatewayId(gateway), RegionId(from), RegionId(to), scanId);
+  });
+}
+
 RGNav::RgMapEventBatch* RgMappingKernelImpl::eventsSince(RGNav::RgMapEventId afterId, CORBA::ULong maxCount,
                                                          const char* consumer) {
   return serve(kArgs, [&] {

@@ -31,6 +31,8 @@ class RgMappingKernelImpl : public ServiceServant<POA_RGNav::RGMappingKernel> {
                                CORBA::Boolean force) override;
   RGNav::RegionId unmergeRegions(RGNav::RequestId requestId, RGNav::RegionId merged) override;
   void reportDoorState(RGNav::RequestId requestId, RGNav::GatewayId door, CORBA::Boolean traversable) override;
+  void reportTraversal(RGNav::RequestId requestId, RGNav::GatewayId gateway, RGNav::RegionId from,
+                       RGNav::RegionId to, RGNav::DataId scanId) override;
   RGNav::RgMapEventBatch* eventsSince(RGNav::RgMapEventId afterId, CORBA::ULong maxCount, const char* consumer) override;
   char* exportMap(const char* directory, const char* name, CORBA::Boolean occupancy) override;
 

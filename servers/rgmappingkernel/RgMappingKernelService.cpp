@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <optional>
+#include <set>
 
 #include "core/common/AtomicFile.h"
 #include "core/rgmap/kernel/RgMapCodec.h"
@@ -195,6 +196,23 @@ void RgMappingKernelService::reportDoorState(std::uint64_t requestId, GatewayId 
   kernel_->recordDoorState(door, traversable);
   requests_.record(requestId, 0);
   checkpoint();
+}
+
+void RgMappingKernelService::reportTraversal(std::uint64_t requestId, GatewayId gateway, RegionId from, RegionId to,
+                                             DataId scanId) {
+  std::lock_guard lock(mutex_);
+  if (requests_.answered(requestId)) return;
+  const auto& gateways = kernel_->state().gateways;
+  const auto g = gateways.find(gateway);
+  if (g == gateways.end() || !g->second.inMap())
+    throw InvalidArgumentError("gateway " + std::to_string(gateway.value()) + " is not in the map");
+  const std::set<RegionId> sides{g->second.sides[0].region, g->second.sides[1].region};
+  if (from == to || sides != std::set<RegionId>{from, to})
+    throw InvalidArgumentError("regions " + std::to_string(from.value()) + " and " + std::to_string(to.value()) +
+                               " are not the sides of gateway " + std::to_string(gateway.value()));
+  health_.add("traversals_reported");
+  health_.set("last_traversal_scan", scanId);
+  requests_.record(requestId, 0);
 }
 
 MapExportData RgMappingKernelService::exportData(bool occupancy) {

@@ -16,6 +16,8 @@
 // that cannot be written degrades the module and is retried with backoff.
 // After a restart it resumes after the last scan, event and pose revision the checkpoint holds.
 // Names, merges, undone merges and door states carry request IDs and act once per ID (RequestLog.h).
+// Gateway traversals the Localization module confirms (thesis 5.3) are checked against the map
+// and counted, once per request ID; the map itself does not take them in yet.
 #pragma once
 
 #include <mutex>
@@ -67,6 +69,10 @@ class RgMappingKernelService {
   RegionId unmergeRegions(std::uint64_t requestId, RegionId merged);
   // A door found open or blocked (RgMappingKernel::recordDoorState), once per requestId.
   void reportDoorState(std::uint64_t requestId, GatewayId door, bool traversable);
+  // A traversal the Localization module confirmed: counted (health "traversals_reported"), once
+  // per requestId. InvalidArgumentError for a gateway the map does not have or regions that are
+  // not its sides.
+  void reportTraversal(std::uint64_t requestId, GatewayId gateway, RegionId from, RegionId to, DataId scanId);
   RgMapEventBatch eventsSince(RgMapEventId afterId, std::size_t maxCount);
   // What an export writes, taken under the lock (the files are written outside it).
   MapExportData exportData(bool occupancy);

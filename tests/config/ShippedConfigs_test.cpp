@@ -14,6 +14,7 @@
 #include "core/gateways/classify/HmmModelFile.h"
 #include "core/gateways/detection/GatewayDetectorConfigYaml.h"
 #include "core/nav/avoidance/CollisionAvoidanceConfigYaml.h"
+#include "core/nav/localization/MclConfigYaml.h"
 #include "core/nav/motion/LowLevelDriveConfigYaml.h"
 #include "core/nav/planning/RoutePlannerConfigYaml.h"
 #include "core/rgmap/kernel/RgMappingKernelConfigYaml.h"
@@ -50,7 +51,8 @@ const std::map<std::string, ModuleFile>& moduleFiles() {
       {"rgmappingkernel", moduleFile(&parseRgMappingKernelConfig)},
       {"pathplanning", moduleFile(&parseRoutePlannerConfig)},
       {"lowleveldrive", moduleFile(&parseLowLevelDriveConfig)},
-      {"collisionavoidance", moduleFile(&parseCollisionAvoidanceConfig)}};
+      {"collisionavoidance", moduleFile(&parseCollisionAvoidanceConfig)},
+      {"localization", moduleFile(&parseMclConfig)}};
   return files;
 }
 

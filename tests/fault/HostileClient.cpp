@@ -68,6 +68,7 @@ HostileClient::HostileClient(const ClientSettings& settings, const HostPort& wat
       kernel_("RGMappingKernel", settings),
       planning_("PathPlanning", settings),
       drive_("LowLevelDrive", settings),
+      localization_("Localization", settings),
       watchdog_("Watchdog", settings, watchdog),
       requests_(std::uint64_t(seed) << 32) {
   addSensorCalls();
@@ -78,6 +79,7 @@ HostileClient::HostileClient(const ClientSettings& settings, const HostPort& wat
   if (demoModules) {
     addPathPlanningCalls();
     addLowLevelDriveCalls();
+    addLocalizationCalls();
   }
   addWatchdogCalls();
   next_ = seed % calls_.size();
@@ -210,6 +212,11 @@ void HostileClient::addKernelCalls(const ExportTraps& traps) {
   add(c, kernel_, "RGMappingKernel.reportDoorState(unknown)",
       [this](K k) { k->reportDoorState(requestId(), kHugeId, false); }, once);
   add(c, kernel_, "RGMappingKernel.reportDoorState(0)", [this](K k) { k->reportDoorState(requestId(), 0, false); }, once);
+  add(c, kernel_, "RGMappingKernel.reportTraversal(unknown)",
+      [this](K k) { k->reportTraversal(requestId(), kHugeId, 1, 2, 1); }, once);
+  add(c, kernel_, "RGMappingKernel.reportTraversal(0)", [this](K k) { k->reportTraversal(requestId(), 0, 1, 2, 1); }, once);
+  add(c, kernel_, "RGMappingKernel.reportTraversal(same region)",
+      [this](K k) { k->reportTraversal(requestId(), 1, 1, 1, 1); }, once);
   add(c, kernel_, "RGMappingKernel.eventsSince(huge)",
       [](K k) { return k->eventsSince(kHugeId, kHugeCount, kOverlong.c_str()); });
   add(c, kernel_, "RGMappingKernel.eventsSince(control)", [](K k) { return k->eventsSince(0, 0, kControl); });
@@ -263,6 +270,39 @@ void HostileClient::addPathPlanningCalls() {
       [this](P p) { return p->replanDoorBlocked(requestId(), 0); }, once);
   add(c, planning_, "PathPlanning.replanDoorBlocked(no plan)",
       [this](P p) { return p->replanDoorBlocked(requestId(), kHugeId); }, once);
+}
+
+void HostileClient::addLocalizationCalls() {
+  std::vector<HostileCall>& c = calls_;
+  using Z = RGNav::Localization_ptr;
+  const RGNav::Pose2D pose{1.5, 7.0, 0.0};
+  const RGNav::PoseSigma sigma{0.1, 0.1, 0.05};
+  add(c, localization_, "Localization.ping", [](Z z) { z->ping(); });
+  add(c, localization_, "Localization.status", [](Z z) { return z->status(); });
+  add(c, localization_, "Localization.filterState", [](Z z) { return z->filterState(); });
+  // Before its first estimate the module answers NotLocalized, its own typed exception: counted as
+  // NotAvailable.
+  const auto localized = [](auto call) {
+    return [call](Z z) {
+      try {
+        return call(z);
+      } catch (const RGNav::NotLocalized& e) {
+        throw NotAvailableError(std::string("NotLocalized: ") + e.message.in());
+      }
+    };
+  };
+  add(c, localization_, "Localization.latestEstimate", localized([](Z z) { return z->latestEstimate(); }));
+  add(c, localization_, "Localization.estimateByScan(0)", localized([](Z z) { return z->estimateByScan(0); }));
+  add(c, localization_, "Localization.estimateByScan(huge)",
+      localized([](Z z) { return z->estimateByScan(kHugeId); }));
+  add(c, localization_, "Localization.particles(0)", localized([](Z z) { return z->particles(0); }));
+  add(c, localization_, "Localization.particles(huge)", localized([](Z z) { return z->particles(kHugeCount); }));
+  // setPose with arguments no guess can have; none of them may change the particles.
+  add(c, localization_, "Localization.setPose(NaN)", [=](Z z) { z->setPose({kNaN, 7.0, 0.0}, sigma, 0); });
+  add(c, localization_, "Localization.setPose(inf theta)", [=](Z z) { z->setPose({1.5, 7.0, kInf}, sigma, 0); });
+  add(c, localization_, "Localization.setPose(negative sigma)", [=](Z z) { z->setPose(pose, {-0.1, 0.1, 0.05}, 0); });
+  add(c, localization_, "Localization.setPose(NaN sigma)", [=](Z z) { z->setPose(pose, {0.1, 0.1, kNaN}, 0); });
+  add(c, localization_, "Localization.setPose(inf sigma)", [=](Z z) { z->setPose(pose, {0.1, kInf, 0.05}, 0); });
 }
 
 void HostileClient::addLowLevelDriveCalls() {

@@ -1,8 +1,9 @@
 // HostileClient: a remote caller that calls every operation of every server of the mapping set
 // (the simulator's or a log playback's Laser and Base, the simulator's GroundTruth, ScanMapper,
-// GatewayDetection, the RG Mapping Kernel, the demo set's PathPlanning and LowLevelDrive modules and the watchdog) with arguments no well-behaved client sends: NaN and infinite coordinates, IDs 0 and
+// GatewayDetection, the RG Mapping Kernel, the demo set's PathPlanning, LowLevelDrive and Localization modules and the watchdog) with arguments no well-behaved client sends: NaN and infinite coordinates, IDs 0 and
 // 2^64-1, counts of 2^32-1, names with control characters or over the length bound, request ID
-// 0, chains of trajectory segments that are not finite, do not join or are too long, merges of a region with itself and with a region that does not exist, undoing merges into
+// 0, chains of trajectory segments that are not finite, do not join or are too long, initial poses
+// and sigmas that are not finite or negative, traversals of gateways that do not exist, merges of a region with itself and with a region that does not exist, undoing merges into
 // regions that do not exist, exports to /etc, to
 // a directory behind a symbolic link and over a symbolic link, and unknown watchdog modules.
 // None of them may change the map: valid names, merges and module control are not among them.
@@ -21,6 +22,7 @@
 #include "GatewayDetection.hh"
 #include "GroundTruth.hh"
 #include "Laser.hh"
+#include "Localization.hh"
 #include "LowLevelDrive.hh"
 #include "PathPlanning.hh"
 #include "RGMappingKernel.hh"
@@ -63,7 +65,7 @@ class HostileClient {
   // One client per thread; `seed` sets where its request IDs and its turn through the calls start,
   // so that threads send the same calls at different times.
   // groundTruth: the set has a simulator, whose GroundTruth object is called too; demoModules:
-  // the set has the PathPlanning and LowLevelDrive modules (the demo set), called too.
+  // the set has the PathPlanning, LowLevelDrive and Localization modules (the demo set), called too.
   HostileClient(const ClientSettings& settings, const HostPort& watchdog, ExportTraps traps, bool groundTruth,
                 bool demoModules, unsigned seed);
   HostileClient(const HostileClient&) = delete;  // its calls refer to its connections
@@ -81,6 +83,7 @@ class HostileClient {
   void addKernelCalls(const ExportTraps& traps);
   void addPathPlanningCalls();
   void addLowLevelDriveCalls();
+  void addLocalizationCalls();
   void addWatchdogCalls();
   std::uint64_t requestId() { return ++requests_; }
 
@@ -92,6 +95,7 @@ class HostileClient {
   TypedConnection<RGNav::RGMappingKernel> kernel_;
   TypedConnection<RGNav::PathPlanning> planning_;
   TypedConnection<RGNav::LowLevelDrive> drive_;
+  TypedConnection<RGNav::Localization> localization_;
   TypedConnection<RGNav::Watchdog> watchdog_;
   std::vector<HostileCall> calls_;
   std::size_t next_ = 0;

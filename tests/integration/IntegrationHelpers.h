@@ -1,6 +1,6 @@
 // Helpers shared by the integration tests: the playback module's command line, predicates on
 // the watchdog's view of a module, the watchdog's event log, reading a whole scan stream,
-// whether a process is gone, and a scratch directory. Every wait is bounded (Wait.h: waitUntil).
+// whether a process is gone, a scratch directory, and the field a refused call names. Every wait is bounded (Wait.h: waitUntil).
 #pragma once
 
 #include <sys/types.h>
@@ -107,6 +107,17 @@ inline std::uint64_t startTimeOf(std::int64_t pid) {
 // Gone: /proc/<pid> absent, a zombie, or the PID now names another process.
 inline bool processGone(std::int64_t pid, std::uint64_t startTime) {
   return !isProcessAlive(static_cast<pid_t>(pid), startTime);
+}
+
+// The field a call's BadArgumentError names; "(accepted)" if it succeeded.
+template <class F>
+std::string refusedField(F&& call) {
+  try {
+    call();
+  } catch (const BadArgumentError& e) {
+    return e.field();
+  }
+  return "(accepted)";
 }
 
 }  // namespace rgnav::testing

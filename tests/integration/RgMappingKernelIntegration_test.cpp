@@ -30,17 +30,6 @@ using namespace rgnav::testing;
 
 namespace {
 
-// The field a call's BadArgumentError names; "(accepted)" if it succeeded.
-template <class F>
-std::string refusedField(F&& call) {
-  try {
-    call();
-  } catch (const BadArgumentError& e) {
-    return e.field();
-  }
-  return "(accepted)";
-}
-
 // The message of the ModuleFailedError a call ends in; "(accepted)" if it succeeded.
 template <class F>
 std::string failureOf(F&& call) {

@@ -20,7 +20,7 @@ LikelihoodField::LikelihoodField(std::span<const Segment2> lines, const BeamMode
   whole.beam = config;
   validate(whole);
   const double randomP = config.zRand / config.maxRangeM;
-  outside_ = static_cast<float>(std::log(randomP));
+  outside_ = std::log(randomP);
   if (lines.empty()) return;
   Eigen::Vector2d lo = lines.front().a, hi = lines.front().a;
   for (const Segment2& s : lines) {
@@ -39,16 +39,20 @@ LikelihoodField::LikelihoodField(std::span<const Segment2> lines, const BeamMode
   for (const Segment2& s : lines) cv::line(free, cell(s.a), cell(s.b), cv::Scalar(0), 1, cv::LINE_8);
   cv::Mat distance;
   cv::distanceTransform(free, distance, cv::DIST_L2, cv::DIST_MASK_PRECISE, CV_32F);
+  const double step = std::max(res / 4.0, 8.0 * config.sigmaHitM / 255.0);
   const double norm = config.zHit / (std::sqrt(2.0 * M_PI) * config.sigmaHitM);
   const double twoSigma2 = 2.0 * config.sigmaHitM * config.sigmaHitM;
-  logP_.resize(static_cast<std::size_t>(width_) * static_cast<std::size_t>(height_));
+  for (std::size_t q = 0; q < logP_.size(); ++q) {
+    const double m = static_cast<double>(q) * step;
+    logP_[q] = std::log(norm * std::exp(-m * m / twoSigma2) + randomP);
+  }
+  steps_.resize(static_cast<std::size_t>(width_) * static_cast<std::size_t>(height_));
+  const double cellsPerStep = res / step;
   for (int row = 0; row < height_; ++row) {
     const float* d = distance.ptr<float>(row);
-    for (int col = 0; col < width_; ++col) {
-      const double m = d[col] * res;
-      logP_[static_cast<std::size_t>(row) * static_cast<std::size_t>(width_) + static_cast<std::size_t>(col)] =
-          static_cast<float>(std::log(norm * std::exp(-m * m / twoSigma2) + randomP));
-    }
+    std::uint8_t* out = &steps_[static_cast<std::size_t>(row) * static_cast<std::size_t>(width_)];
+    for (int col = 0; col < width_; ++col)
+      out[col] = static_cast<std::uint8_t>(std::min(255.0, std::round(d[col] * cellsPerStep)));
   }
 }
 
@@ -56,7 +60,7 @@ double LikelihoodField::logLikelihood(const Eigen::Vector2d& point) const {
   const double res = config_.resolutionM;
   const double fx = (point.x() - origin_.x()) / res, fy = (point.y() - origin_.y()) / res;
   if (!(fx >= 0.0 && fy >= 0.0 && fx < width_ && fy < height_)) return outside_;
-  return logP_[static_cast<std::size_t>(fy) * static_cast<std::size_t>(width_) + static_cast<std::size_t>(fx)];
+  return logP_[steps_[static_cast<std::size_t>(fy) * static_cast<std::size_t>(width_) + static_cast<std::size_t>(fx)]];
 }
 
 double LikelihoodField::logLikelihood(const Pose2D& robotPose, const ScanBeams& beams) const {
@@ -67,6 +71,6 @@ double LikelihoodField::logLikelihood(const Pose2D& robotPose, const ScanBeams& 
   return sum * config_.beamWeight;
 }
 
-std::size_t LikelihoodField::bytes() const { return logP_.size() * sizeof(float); }
+std::size_t LikelihoodField::bytes() const { return steps_.size() + sizeof(logP_); }
 
 }  // namespace rgnav

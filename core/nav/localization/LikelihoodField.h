@@ -2,12 +2,17 @@
 // measurement model is evaluated on the line map of the particle's region; Thrun, Burgard, Fox,
 // Probabilistic Robotics 2005, 6.4). The segments are drawn into a raster of
 // BeamModelConfig::resolutionM, OpenCV's distance transform gives every cell's distance to the
-// nearest line, and each cell stores log p(z) of a beam ending there (MclConfig.h), as float.
+// nearest line. Each cell stores that distance in one byte, in steps of a quarter cell (or of
+// sigmaHit / 32 if that is coarser, so that 255 steps reach 8 sigmaHit, where a beam scores as
+// random), and a 256-entry table gives log p(z) of a beam ending there (MclConfig.h): a quarter
+// of the memory of a float per cell, with the distance rounded to 1.25 cm at 5 cm cells.
 // Beam end points outside the raster score like a random measurement (log(zRand / maxRange)).
 #pragma once
 
 #include <Eigen/Core>
+#include <array>
 #include <cstddef>
+#include <cstdint>
 #include <span>
 #include <vector>
 
@@ -39,8 +44,9 @@ class LikelihoodField {
   BeamModelConfig config_;
   Eigen::Vector2d origin_ = Eigen::Vector2d::Zero();  // corner of cell (0, 0)
   int width_ = 0, height_ = 0;
-  std::vector<float> logP_;  // row-major, row 0 at the smallest y
-  float outside_ = 0.0f;     // log p of a point outside the raster
+  std::vector<std::uint8_t> steps_;  // per cell, row-major, row 0 at the smallest y: distance steps
+  std::array<double, 256> logP_{};   // log p by distance step
+  double outside_ = 0.0;             // log p of a point outside the raster
 };
 
 }  // namespace rgnav

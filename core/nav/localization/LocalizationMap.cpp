@@ -2,6 +2,7 @@
 #include "core/nav/localization/LocalizationMap.h"
 
 #include <algorithm>
+#include <cmath>
 
 #include "core/common/Errors.h"
 
@@ -25,12 +26,30 @@ LocalizationMap::LocalizationMap(const BeamModelConfig& config) : config_(config
 
 void LocalizationMap::setRegion(LocalizationRegion region) {
   const RegionId id = region.id;
-  regions_[id] = std::move(region);
+  const Pose2D& f = region.frame;
+  regions_[id] = {std::move(region), {std::cos(f.theta), std::sin(f.theta), f.x, f.y}, {}, std::nullopt};
+  relink();
 }
 
 void LocalizationMap::removeRegion(RegionId id) {
   regions_.erase(id);
   fields_.erase(id);
+  relink();
+}
+
+void LocalizationMap::relink() {
+  for (auto& [id, entry] : regions_) {
+    entry.neighbours.clear();
+    entry.stacked.reset();
+    for (const GatewayId g : entry.region.gateways) {
+      const auto it = gateways_.find(g);
+      if (it == gateways_.end()) continue;
+      for (const RegionId side : it->second.regions)
+        if (side != id && regions_.count(side) &&
+            std::find(entry.neighbours.begin(), entry.neighbours.end(), side) == entry.neighbours.end())
+          entry.neighbours.push_back(side);
+    }
+  }
 }
 
 void LocalizationMap::setGateways(const std::vector<GatewayView>& gateways) {
@@ -43,6 +62,7 @@ void LocalizationMap::setGateways(const std::vector<GatewayView>& gateways) {
     kept.centre = (kept.crossingPoints[0] + kept.crossingPoints[1]) / 2.0;
     gateways_[g.id] = kept;
   }
+  relink();
 }
 
 LocalizationMap LocalizationMap::fromViews(const std::vector<RegionView>& regions,
@@ -66,7 +86,7 @@ LocalizationMap LocalizationMap::wholeFloor(const std::vector<RegionView>& regio
 const LocalizationRegion& LocalizationMap::region(RegionId id) const {
   const auto it = regions_.find(id);
   if (it == regions_.end()) throw NotAvailableError("LocalizationMap: no region " + std::to_string(id.value()));
-  return it->second;
+  return it->second.region;
 }
 
 std::vector<RegionId> LocalizationMap::regionIds() const {
@@ -75,20 +95,9 @@ std::vector<RegionId> LocalizationMap::regionIds() const {
   return ids;
 }
 
-std::vector<RegionId> LocalizationMap::neighbours(RegionId id) const {
-  std::vector<RegionId> out;
-  for (const GatewayId g : region(id).gateways) {
-    const auto it = gateways_.find(g);
-    if (it == gateways_.end()) continue;
-    for (const RegionId side : it->second.regions)
-      if (side != id && regions_.count(side) && std::find(out.begin(), out.end(), side) == out.end()) out.push_back(side);
-  }
-  return out;
-}
-
 const LikelihoodField& LocalizationMap::field(RegionId id) const {
   const LocalizationRegion& own = region(id);
-  const std::vector<RegionId> stacked = neighbours(id);
+  const std::vector<RegionId>& stacked = stackedWith(regions_.at(id));
   std::vector<std::pair<RegionId, std::uint64_t>> key{{id, own.revision}};
   for (const RegionId n : stacked) key.emplace_back(n, region(n).revision);
   CachedField& cached = fields_[id];
@@ -108,8 +117,12 @@ const LikelihoodField& LocalizationMap::field(RegionId id) const {
 
 RegionId LocalizationMap::handOver(RegionId from, const Eigen::Vector2d& p, double radiusM) const {
   const auto it = regions_.find(from);
-  if (it == regions_.end()) return from;
-  for (const GatewayId id : it->second.gateways) {
+  if (it == regions_.end() || holds(it->second, p)) return from;
+  for (const RegionId n : it->second.neighbours)
+    if (holds(regions_.at(n), p)) return n;
+  for (const auto& [id, entry] : regions_)
+    if (id != from && holds(entry, p)) return id;
+  for (const GatewayId id : it->second.region.gateways) {
     const auto g = gateways_.find(id);
     if (g == gateways_.end()) continue;
     const LocalizationGateway& gw = g->second;
@@ -123,12 +136,47 @@ RegionId LocalizationMap::handOver(RegionId from, const Eigen::Vector2d& p, doub
 }
 
 RegionId LocalizationMap::regionAt(const Eigen::Vector2d& p, RegionId hint) const {
-  const auto holds = [&](const LocalizationRegion& r) { return r.freespace.isFreeAt(apply(inverse(r.frame), p)); };
   const auto it = regions_.find(hint);
-  if (it != regions_.end() && holds(it->second)) return hint;
-  for (const auto& [id, r] : regions_)
-    if (holds(r)) return id;
+  if (it != regions_.end() && holds(it->second, p)) return hint;
+  for (const auto& [id, entry] : regions_)
+    if (holds(entry, p)) return id;
   return RegionId{};
+}
+
+bool LocalizationMap::freeIn(RegionId id, const Eigen::Vector2d& p) const {
+  const auto it = regions_.find(id);
+  return it != regions_.end() && holds(it->second, p);
+}
+
+bool LocalizationMap::holds(const Entry& entry, const Eigen::Vector2d& p) const {
+  return entry.region.freespace.isFreeAt(entry.toRegion(p));
+}
+
+const std::vector<RegionId>& LocalizationMap::stackedWith(const Entry& entry) const {
+  if (!entry.stacked) {
+    std::vector<RegionId> stacked = entry.neighbours;
+    for (const RegionId o : overlapping(entry.region.id))
+      if (std::find(stacked.begin(), stacked.end(), o) == stacked.end()) stacked.push_back(o);
+    entry.stacked = std::move(stacked);
+  }
+  return *entry.stacked;
+}
+
+std::vector<RegionId> LocalizationMap::overlapping(RegionId id) const {
+  const Entry& own = regions_.at(id);
+  std::vector<RegionId> out;
+  for (const auto& [otherId, entry] : regions_) {
+    if (otherId == id) continue;
+    const LocalizationRegion& other = entry.region;
+    const Pose2D otherToMap = other.frame;
+    std::size_t shared = 0;
+    for (int row = 0; row < other.freespace.height && shared < config_.overlapMinCells; ++row)
+      for (int col = 0; col < other.freespace.width && shared < config_.overlapMinCells; ++col)
+        if (other.freespace.isFree(col, row) && holds(own, apply(otherToMap, other.freespace.cellCenter(col, row))))
+          ++shared;
+    if (shared >= config_.overlapMinCells) out.push_back(otherId);
+  }
+  return out;
 }
 
 std::size_t LocalizationMap::fieldBytes() const {

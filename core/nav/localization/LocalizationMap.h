@@ -7,8 +7,9 @@
 // Deliberate difference: the thesis evaluates a particle on its region's data only. Beams through
 // an open door end in the neighbouring region, whose walls the region's own line map lacks; the
 // field of a region is therefore built from its own lines plus those of the regions it shares a
-// gateway with ("the LM also requests and stacks the data for the neighboring regions"),
-// transformed into its frame.
+// gateway with ("the LM also requests and stacks the data for the neighboring regions") and of
+// the regions whose freespace overlaps its own (a place the kernel mapped twice, e.g. a corridor
+// ring whose return was not recognised), transformed into its frame.
 // wholeFloor() is the global-map baseline: one region (ID 1, identity frame) holding every line
 // in the map frame and no gateway; RegionMcl then runs unchanged as a global-map MCL.
 #pragma once
@@ -18,6 +19,7 @@
 #include <cstdint>
 #include <map>
 #include <memory>
+#include <optional>
 #include <utility>
 #include <vector>
 
@@ -67,22 +69,47 @@ class LocalizationMap {
   // first use after a change. NotAvailableError for an unknown region.
   const LikelihoodField& field(RegionId id) const;
 
-  // The region a particle of region `from` at map position `p` belongs to after the hand-over
-  // rule: if p lies within `radiusM` of the centre of a gateway of `from` and nearer to the other
-  // side's crossing point than to its own side's, the other side's region; else `from`.
+  // The region a particle of region `from` at map position `p` belongs to (thesis 5.3: the quick
+  // check "if a given particle lies in the current region" on the 1-bit freespace): `from` while
+  // its freespace holds p; else the first gateway neighbour whose freespace holds p; else any
+  // region whose freespace holds p (regions may overlap where the kernel mapped a place twice);
+  // else, within `radiusM` of a gateway of `from`, the other side's region if p is nearer to
+  // that side's crossing point; else `from`.
   RegionId handOver(RegionId from, const Eigen::Vector2d& p, double radiusM) const;
 
   // The region whose freespace holds map point p, preferring `hint`; none if no region's does.
   RegionId regionAt(const Eigen::Vector2d& p, RegionId hint) const;
+  // Whether region `id`'s freespace holds map point p (false for an unknown region).
+  bool freeIn(RegionId id, const Eigen::Vector2d& p) const;
 
   std::size_t fieldBytes() const;  // memory of the fields built so far
 
  private:
+  // Map point -> region frame, with the rotation's cosine and sine computed once.
+  struct ToRegion {
+    double c = 1.0, s = 0.0, x = 0.0, y = 0.0;
+    Eigen::Vector2d operator()(const Eigen::Vector2d& p) const {
+      const double dx = p.x() - x, dy = p.y() - y;
+      return {c * dx + s * dy, -s * dx + c * dy};
+    }
+  };
+  struct Entry {
+    LocalizationRegion region;
+    ToRegion toRegion;
+    std::vector<RegionId> neighbours;  // regions sharing a kept gateway
+    // The regions whose lines the field stacks: the neighbours and the overlapping regions;
+    // worked out on first use after a change of the map.
+    mutable std::optional<std::vector<RegionId>> stacked;
+  };
+  bool holds(const Entry& entry, const Eigen::Vector2d& p) const;
+  void relink();  // recomputes every entry's neighbours and forgets the stacked regions
+  const std::vector<RegionId>& stackedWith(const Entry& entry) const;
+
   BeamModelConfig config_;
-  std::map<RegionId, LocalizationRegion> regions_;
+  std::map<RegionId, Entry> regions_;
   std::map<GatewayId, LocalizationGateway> gateways_;
-  // The regions sharing a kept gateway with `id`.
-  std::vector<RegionId> neighbours(RegionId id) const;
+  // The regions whose freespace shares at least BeamModelConfig::overlapMinCells cells with `id`'s.
+  std::vector<RegionId> overlapping(RegionId id) const;
 
   struct CachedField {
     std::vector<std::pair<RegionId, std::uint64_t>> key;  // the revisions of the region and its neighbours

@@ -26,6 +26,7 @@ void validate(const MclConfig& config) {
   requirePositive(beam.maxRangeM, "beam.max_range_m");
   requireNonNegative(beam.marginM, "beam.margin_m");
   requireCount(beam.beams, "beam.beams");
+  requireCount(beam.overlapMinCells, "beam.overlap_min_cells");
   requirePositive(beam.beamWeight, "beam.beam_weight");
   for (const double alpha : {config.motion.alpha1, config.motion.alpha2, config.motion.alpha3, config.motion.alpha4})
     requireNonNegative(alpha, "motion.alpha");

@@ -18,10 +18,16 @@ struct BeamModelConfig {
   double zRand = 0.1;
   double maxRangeM = 30.0;     // beams at or beyond this (or without a return) are skipped
   double marginM = 1.0;        // the field reaches this far beyond the lines' bounding box
-  std::size_t beams = 60;      // beams used per update, evenly spread over the scan
+  // A region's field also holds the lines of every region whose freespace shares at least this
+  // many (15 cm) cells with its own (LocalizationMap.h).
+  std::size_t overlapMinCells = 45;
+  // Beams used per update, evenly spread over the scan. beams and beamWeight (and minParticles)
+  // were tuned on the first half of the Intel keyframes ("rgctl eval localization",
+  // docs/EVALUATION.md): 120 beams at 0.1 weigh a scan as 60 at 0.2 did, with less noise.
+  std::size_t beams = 120;
   // The log-likelihood of a scan is the beams' sum times this (< 1: beams are not independent;
   // Thrun et al. 6.3.4 "beam correlation").
-  double beamWeight = 0.2;
+  double beamWeight = 0.1;
 };
 
 // The four-alpha odometry motion model (Thrun et al. 5.4, Table 5.6).
@@ -34,7 +40,7 @@ struct MotionModelConfig {
 
 // KLD-sampling (Fox 2003): the particle count bound for a histogram of bins over (x, y, theta).
 struct KldConfig {
-  std::size_t minParticles = 100;
+  std::size_t minParticles = 1000;  // fewer leave the estimate noisy (Intel: 0.062 m at 100, 0.049 m at 1000)
   std::size_t maxParticles = 5000;
   double epsilon = 0.05;  // bound on the KL divergence
   double upperQuantile = 2.326;  // z_(1-delta), delta = 0.01

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <map>
 #include <numeric>
 
 #include "core/common/Errors.h"
@@ -96,9 +97,12 @@ void RegionMcl::predict(const OdometryMotion& motion) {
 void RegionMcl::correct(const ScanBeams& beams) {
   std::vector<double> logW(particles_.size());
   double best = -std::numeric_limits<double>::infinity();
+  std::map<RegionId, const LikelihoodField*> fields;  // looked up once per region and update
   for (std::size_t i = 0; i < particles_.size(); ++i) {
     const Particle& p = particles_[i];
-    logW[i] = std::log(std::max(p.weight, 1e-300)) + map_.field(p.region).logLikelihood(p.pose, beams);
+    const LikelihoodField*& field = fields[p.region];
+    if (!field) field = &map_.field(p.region);
+    logW[i] = std::log(std::max(p.weight, 1e-300)) + field->logLikelihood(p.pose, beams);
     best = std::max(best, logW[i]);
   }
   double total = 0.0;
@@ -162,24 +166,25 @@ void RegionMcl::refreshEstimate(DataId scanId, const ScanBeams& beams) {
 }
 
 void RegionMcl::checkTraversal(DataId scanId) {
-  // The estimate's region moves on once it is traversalConfirmM nearer the other side's crossing
-  // point of a gateway of its region than its own side's (the previous estimate's region).
-  if (!estimate_ || lastRegion_.isNone()) {
-    if (estimate_) lastRegion_ = estimate_->region;
+  if (!estimate_) return;
+  const RegionId now = estimate_->region;
+  if (lastRegion_.isNone()) lastRegion_ = now;
+  if (now == lastRegion_) return;
+  // The gateway between the two regions nearest to the estimate; none: the particles moved into a
+  // region mapped over the same place (LocalizationMap::handOver), which is no traversal.
+  const Eigen::Vector2d p = position(estimate_->mapPose);
+  const LocalizationGateway* passed = nullptr;
+  for (const auto& [id, g] : map_.gateways()) {
+    const bool joins = (g.regions[0] == lastRegion_ && g.regions[1] == now) || (g.regions[1] == lastRegion_ && g.regions[0] == now);
+    if (joins && (!passed || (p - g.centre).squaredNorm() < (p - passed->centre).squaredNorm())) passed = &g;
+  }
+  if (!passed) {
+    lastRegion_ = now;
     return;
   }
-  const Eigen::Vector2d p = position(estimate_->mapPose);
-  for (const auto& [id, g] : map_.gateways()) {
-    const std::size_t own = g.regions[0] == lastRegion_ ? 0 : g.regions[1] == lastRegion_ ? 1 : 2;
-    if (own == 2) continue;
-    if ((p - g.centre).norm() > config_.handoverRadiusM) continue;
-    const double beyond = (p - g.crossingPoints[own]).norm() - (p - g.crossingPoints[1 - own]).norm();
-    if (beyond >= config_.traversalConfirmM) {
-      traversals_.push_back({id, lastRegion_, g.regions[1 - own], scanId});
-      lastRegion_ = g.regions[1 - own];
-      return;
-    }
-  }
+  if ((p - passed->centre).norm() < config_.traversalConfirmM || map_.freeIn(lastRegion_, p)) return;
+  traversals_.push_back({passed->id, lastRegion_, now, scanId});
+  lastRegion_ = now;
 }
 
 PoseEstimate RegionMcl::estimate() const {
@@ -187,8 +192,8 @@ PoseEstimate RegionMcl::estimate() const {
   return *estimate_;
 }
 
-std::vector<GatewayTraversal> RegionMcl::takeTraversals() {
-  std::vector<GatewayTraversal> out;
+std::vector<ConfirmedTraversal> RegionMcl::takeTraversals() {
+  std::vector<ConfirmedTraversal> out;
   out.swap(traversals_);
   return out;
 }

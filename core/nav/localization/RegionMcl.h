@@ -10,9 +10,11 @@
 //      low-variance draws (LowVarianceResampler.h) in shuffled order until the count reaches the
 //      KLD bound of the bins drawn so far (KldSampling.h).
 // The estimate is the weighted mean of the heaviest cluster (ParticleClusters.h); the best
-// particle is reported beside it (the thesis' choice). When the estimate lies
-// traversalConfirmM beyond a gateway (nearer the other side's crossing point by that much) in a
-// new region, the traversal is reported once (confirmedTraversals), as evidence for the kernel.
+// particle is reported beside it (the thesis' choice). When the estimate's region changes to a
+// region joined to the previous one by a gateway, and the estimate lies traversalConfirmM from
+// that gateway's centre and outside the previous region's freespace ("a reasonable distance
+// behind the gateway"), the traversal is reported once (takeTraversals), as evidence for the
+// kernel; a change into a region mapped over the same place (no gateway between) is none.
 // Kidnapping and global localization are not this class's: the caller reseeds with setParticles.
 #pragma once
 
@@ -42,7 +44,9 @@ struct PoseEstimate {
   double fitPerBeam = 0.0;
 };
 
-struct GatewayTraversal {
+// (Not "GatewayTraversal": core/gateways/passages/PassageTracker.h has a struct of that name in
+// rgnav, and a program that links both must not see two definitions of one name.)
+struct ConfirmedTraversal {
   GatewayId gateway;
   RegionId from, to;
   DataId scanId = 0;
@@ -71,14 +75,14 @@ class RegionMcl {
   const std::vector<Particle>& particles() const { return particles_; }
   Pose2D mapPose(const Particle& particle) const;
   // Traversals confirmed since the last call (cleared by it).
-  std::vector<GatewayTraversal> takeTraversals();
+  std::vector<ConfirmedTraversal> takeTraversals();
 
  private:
   void predict(const OdometryMotion& motion);
   void correct(const ScanBeams& beams);
   void resample();
   void refreshEstimate(DataId scanId, const ScanBeams& beams);
-  // Confirms a traversal when the estimate lies traversalConfirmM beyond a gateway of lastRegion_.
+  // Confirms a traversal when the estimate's region changed from lastRegion_ across a gateway.
   void checkTraversal(DataId scanId);
 
   MclConfig config_;
@@ -88,7 +92,7 @@ class RegionMcl {
   std::vector<Particle> particles_;
   std::optional<Pose2D> lastOdometry_;  // the odometry of the last update
   std::optional<PoseEstimate> estimate_;
-  std::vector<GatewayTraversal> traversals_;
+  std::vector<ConfirmedTraversal> traversals_;
   RegionId lastRegion_;  // the region the confirmed traversals have the robot in
 };
 

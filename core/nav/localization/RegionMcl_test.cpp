@@ -16,7 +16,7 @@ namespace {
 struct Walk {
   double finalError = 0.0, maxError = 0.0;
   RegionId finalRegion;
-  std::vector<GatewayTraversal> traversals;
+  std::vector<ConfirmedTraversal> traversals;
   bool allParticlesInRoom2 = false;
 };
 
@@ -36,7 +36,7 @@ Walk walkThroughTheDoor(const LocalizationMap& map, const testing::TwoRooms& roo
     walk.finalError = std::hypot(e.mapPose.x - truth.x, e.mapPose.y - truth.y);
     walk.maxError = std::max(walk.maxError, walk.finalError);
     walk.finalRegion = e.region;
-    for (const GatewayTraversal& t : mcl.takeTraversals()) walk.traversals.push_back(t);
+    for (const ConfirmedTraversal& t : mcl.takeTraversals()) walk.traversals.push_back(t);
   }
   walk.allParticlesInRoom2 = std::all_of(mcl.particles().begin(), mcl.particles().end(),
                                          [](const Particle& p) { return p.region == RegionId{2}; });
@@ -50,6 +50,7 @@ class RegionMclTest : public CppUnit::TestFixture {
   CPPUNIT_TEST(tracksThroughTheDoorIntoTheNextRegion);
   CPPUNIT_TEST(handsParticlesOverIntoTheNeighboursFrame);
   CPPUNIT_TEST(wholeFloorBaselineTracksTheSameWalk);
+  CPPUNIT_TEST(stacksTheLinesOfARegionMappedOverItsFreespace);
   CPPUNIT_TEST(refusesBadInitialPoses);
   CPPUNIT_TEST(doesNotUpdateAStandingRobot);
   CPPUNIT_TEST_SUITE_END();
@@ -75,8 +76,11 @@ class RegionMclTest : public CppUnit::TestFixture {
     CPPUNIT_ASSERT_EQUAL(RegionId{1}, map.handOver(RegionId{1}, Eigen::Vector2d(3.9, 2.0), 3.0));
     CPPUNIT_ASSERT_EQUAL(RegionId{2}, map.handOver(RegionId{1}, Eigen::Vector2d(4.1, 2.0), 3.0));
     CPPUNIT_ASSERT_EQUAL(RegionId{1}, map.handOver(RegionId{2}, Eigen::Vector2d(3.9, 2.0), 3.0));
-    // Far from the door nothing is handed over, whichever crossing point is nearer.
-    CPPUNIT_ASSERT_EQUAL(RegionId{1}, map.handOver(RegionId{1}, Eigen::Vector2d(7.5, 3.5), 3.0));
+    // A particle in the other room's freespace belongs to it, wherever it crossed; one outside
+    // every freespace and far from the door stays where it was.
+    CPPUNIT_ASSERT_EQUAL(RegionId{2}, map.handOver(RegionId{1}, Eigen::Vector2d(7.5, 3.5), 3.0));
+    CPPUNIT_ASSERT_EQUAL(RegionId{1}, map.handOver(RegionId{1}, Eigen::Vector2d(20.0, 20.0), 3.0));
+    CPPUNIT_ASSERT_EQUAL(RegionId{1}, map.handOver(RegionId{1}, Eigen::Vector2d(3.9, 2.0), 3.0));
     // A particle keeps its map pose across the hand-over.
     RegionMcl mcl(MclConfig{}, map, 3);
     mcl.setParticles({{RegionId{1}, Pose2D{3.95, 2.0, 0.0}, 1.0}});
@@ -95,6 +99,26 @@ class RegionMclTest : public CppUnit::TestFixture {
     CPPUNIT_ASSERT(walk.finalError < 0.05);
     CPPUNIT_ASSERT_EQUAL(RegionId{1}, walk.finalRegion);
     CPPUNIT_ASSERT(walk.traversals.empty());
+  }
+
+  void stacksTheLinesOfARegionMappedOverItsFreespace() {
+    // Region 3 maps room 1 a second time (no gateway joins them, as when the kernel did not
+    // recognise a return); only region 3 holds the top wall. Region 1's field must have it.
+    testing::TwoRooms rooms = testing::twoRooms();
+    RegionView twin = rooms.regions[0];
+    twin.summary.id = RegionId{3};
+    twin.summary.gateways.clear();
+    twin.lines = {{{0, 4}, {4, 4}}};
+    std::erase_if(rooms.regions[0].lines, [](const Segment2& l) { return l.a.y() == 4.0 && l.b.y() == 4.0; });
+    const Eigen::Vector2d onTopWall(2.0, 4.0);
+    std::vector<RegionView> regions = rooms.regions;
+    regions.push_back(twin);
+    const LocalizationMap overlapping = LocalizationMap::fromViews(regions, rooms.gateways, BeamModelConfig{});
+    twin.freespace = FreespaceBitmap::allOccupied(0.15, Eigen::Vector2d::Zero(), 1, 1);
+    regions.back() = twin;
+    const LocalizationMap apart = LocalizationMap::fromViews(regions, rooms.gateways, BeamModelConfig{});
+    CPPUNIT_ASSERT(overlapping.field(RegionId{1}).logLikelihood(onTopWall) > 1.0);
+    CPPUNIT_ASSERT(apart.field(RegionId{1}).logLikelihood(onTopWall) < -1.0);
   }
 
   void refusesBadInitialPoses() {

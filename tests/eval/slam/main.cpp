@@ -63,16 +63,7 @@ std::string formatError(const rgnav::RelativePoseError& e) {
 std::vector<rgnav::LaserScan> readScans(const Options& options) {
   rgnav::LogReaderOptions readerOptions;
   readerOptions.correctedPosesPath = options.corrected;
-  const auto log = rgnav::openLog(options.log, readerOptions);
-  const std::size_t limit = options.maxScans == 0 ? SIZE_MAX : options.maxScans;
-  std::vector<rgnav::LaserScan> scans;
-  while (scans.size() < limit) {
-    auto record = log->next();
-    if (!record) break;
-    if (auto* scan = std::get_if<rgnav::LaserScan>(&*record)) scans.push_back(std::move(*scan));
-  }
-  if (scans.empty()) throw rgnav::InvalidArgumentError("no scans in " + options.log);
-  return scans;
+  return rgnav::readLaserScans(options.log, readerOptions, options.maxScans);
 }
 
 void addOdometryNoise(std::vector<rgnav::LaserScan>& scans, std::uint64_t seed) {
