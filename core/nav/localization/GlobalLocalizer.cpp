@@ -45,7 +45,7 @@ std::optional<PoseEstimate> GlobalLocalizer::estimate() const {
   return mcl_.estimate();
 }
 
-std::vector<GatewayTraversal> GlobalLocalizer::takeTraversals() { return std::exchange(traversals_, {}); }
+std::vector<ConfirmedTraversal> GlobalLocalizer::takeTraversals() { return std::exchange(traversals_, {}); }
 
 void GlobalLocalizer::relocalize() {
   state_ = LocalizerState::kSearching;
@@ -83,7 +83,7 @@ void GlobalLocalizer::update(const LaserScan& scan) {
   const bool updated = mcl_.update(scan);
   travelSinceSeedM_ += step;
   travelSinceRecognitionM_ += step;
-  for (const GatewayTraversal& t : mcl_.takeTraversals()) {
+  for (const ConfirmedTraversal& t : mcl_.takeTraversals()) {
     traversedInto_ = t.to;
     if (state_ == LocalizerState::kLocalized) traversals_.push_back(t);
   }

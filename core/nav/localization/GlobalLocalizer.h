@@ -125,7 +125,7 @@ class GlobalLocalizer {
   std::size_t kidnapsDetected() const { return kidnaps_; }
   std::size_t corrections() const { return corrections_; }
   // Traversals the filter confirmed while localized, since the last call (for the kernel).
-  std::vector<GatewayTraversal> takeTraversals();
+  std::vector<ConfirmedTraversal> takeTraversals();
 
  private:
   void recognizeAndSeed(const LaserScan& scan);
@@ -152,7 +152,7 @@ class GlobalLocalizer {
   std::optional<Pose2D> candidatesOdometry_;  // odometry at the last recognition
   double travelSinceSeedM_ = 0.0, travelSinceRecognitionM_ = 0.0;
   std::optional<RegionId> traversedInto_;   // the region the filter's last traversal led into
-  std::vector<GatewayTraversal> traversals_;
+  std::vector<ConfirmedTraversal> traversals_;
   std::size_t lowFitUpdates_ = 0;
   std::size_t recognitions_ = 0, kidnaps_ = 0, corrections_ = 0;
 };
