@@ -44,8 +44,8 @@ struct PoseEstimate {
   double fitPerBeam = 0.0;
 };
 
-// (Not "GatewayTraversal": core/gateways/passages/PassageTracker.h has a struct of that name in
-// rgnav, and a program that links both must not see two definitions of one name.)
+// A gateway traversal the filter confirmed (the evidence the Localization module reports to the
+// kernel). PassageTracker.h's GatewayTraversal is the detector's, in its odometry frame.
 struct ConfirmedTraversal {
   GatewayId gateway;
   RegionId from, to;
