@@ -12,7 +12,7 @@ namespace rgnav {
 // 6.4, Table 6.3): p(z) = zHit * N(d; 0, sigmaHit^2) + zRand / maxRange, d = distance from the
 // beam's end point to the nearest line of the map. Beams without a return are skipped.
 struct BeamModelConfig {
-  double resolutionM = 0.05;   // field cell size (the issue: 5 cm)
+  double resolutionM = 0.05;   // m: field cell size
   double sigmaHitM = 0.08;     // m
   double zHit = 0.9;
   double zRand = 0.1;
