@@ -63,12 +63,20 @@ double LikelihoodField::logLikelihood(const Eigen::Vector2d& point) const {
   return logP_[steps_[static_cast<std::size_t>(fy) * static_cast<std::size_t>(width_) + static_cast<std::size_t>(fx)]];
 }
 
-double LikelihoodField::logLikelihood(const Pose2D& robotPose, const ScanBeams& beams) const {
-  const double c = std::cos(robotPose.theta), s = std::sin(robotPose.theta);
+double LikelihoodField::sumLogLikelihood(const Pose2D& pose, std::span<const Eigen::Vector2d> points) const {
+  const double c = std::cos(pose.theta), s = std::sin(pose.theta);
   double sum = 0.0;
-  for (const Eigen::Vector2d& e : beams.endpoints)
-    sum += logLikelihood(Eigen::Vector2d(robotPose.x + c * e.x() - s * e.y(), robotPose.y + s * e.x() + c * e.y()));
-  return sum * config_.beamWeight;
+  for (const Eigen::Vector2d& e : points)
+    sum += logLikelihood(Eigen::Vector2d(pose.x + c * e.x() - s * e.y(), pose.y + s * e.x() + c * e.y()));
+  return sum;
+}
+
+double LikelihoodField::logLikelihood(const Pose2D& robotPose, const ScanBeams& beams) const {
+  return sumLogLikelihood(robotPose, beams.endpoints) * config_.beamWeight;
+}
+
+double LikelihoodField::meanLogLikelihood(const Pose2D& pose, std::span<const Eigen::Vector2d> points) const {
+  return points.empty() ? 0.0 : sumLogLikelihood(pose, points) / static_cast<double>(points.size());
 }
 
 std::size_t LikelihoodField::bytes() const { return steps_.size() + sizeof(logP_); }

@@ -34,6 +34,9 @@ class LikelihoodField {
   // The scan's log-likelihood at `robotPose` (in the lines' frame): the beams' sum times
   // BeamModelConfig::beamWeight.
   double logLikelihood(const Pose2D& robotPose, const ScanBeams& beams) const;
+  // The mean log p of points given in the frame of `pose` (robot or observation frame), placed at
+  // `pose` in the lines' frame, without beamWeight: how well they fit the lines there. 0 for no points.
+  double meanLogLikelihood(const Pose2D& pose, std::span<const Eigen::Vector2d> points) const;
 
   std::size_t bytes() const;  // memory the field holds
   Eigen::Vector2d origin() const { return origin_; }
@@ -41,6 +44,9 @@ class LikelihoodField {
   int height() const { return height_; }
 
  private:
+  // The sum of log p of `points` (in the frame of `pose`) placed at `pose`.
+  double sumLogLikelihood(const Pose2D& pose, std::span<const Eigen::Vector2d> points) const;
+
   BeamModelConfig config_;
   Eigen::Vector2d origin_ = Eigen::Vector2d::Zero();  // corner of cell (0, 0)
   int width_ = 0, height_ = 0;

@@ -5,16 +5,12 @@
 #include <cmath>
 
 #include "core/common/Errors.h"
+#include "core/lines/ScanPoints.h"
 
 namespace rgnav {
 namespace {
 
-Eigen::Vector2d apply(const Pose2D& frame, const Eigen::Vector2d& p) {
-  const Pose2D q = compose(frame, Pose2D{p.x(), p.y(), 0.0});
-  return {q.x, q.y};
-}
-
-Segment2 transformed(const Pose2D& frame, const Segment2& s) { return {apply(frame, s.a), apply(frame, s.b)}; }
+Segment2 transformed(const Pose2D& frame, const Segment2& s) { return {transformPoint(frame, s.a), transformPoint(frame, s.b)}; }
 
 }  // namespace
 
@@ -172,7 +168,7 @@ std::vector<RegionId> LocalizationMap::overlapping(RegionId id) const {
     std::size_t shared = 0;
     for (int row = 0; row < other.freespace.height && shared < config_.overlapMinCells; ++row)
       for (int col = 0; col < other.freespace.width && shared < config_.overlapMinCells; ++col)
-        if (other.freespace.isFree(col, row) && holds(own, apply(otherToMap, other.freespace.cellCenter(col, row))))
+        if (other.freespace.isFree(col, row) && holds(own, transformPoint(otherToMap, other.freespace.cellCenter(col, row))))
           ++shared;
     if (shared >= config_.overlapMinCells) out.push_back(otherId);
   }

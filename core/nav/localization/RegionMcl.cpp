@@ -154,14 +154,7 @@ void RegionMcl::refreshEstimate(DataId scanId, const ScanBeams& beams) {
   e.bestParticle = poses[best];
   e.clusterWeight = top.weight;
   e.particles = particles_.size();
-  if (!beams.endpoints.empty()) {
-    const LikelihoodField& field = map_.field(e.region);
-    double sum = 0.0;
-    const double c = std::cos(e.regionPose.theta), s = std::sin(e.regionPose.theta);
-    for (const Eigen::Vector2d& b : beams.endpoints)
-      sum += field.logLikelihood(Eigen::Vector2d(e.regionPose.x + c * b.x() - s * b.y(), e.regionPose.y + s * b.x() + c * b.y()));
-    e.fitPerBeam = sum / static_cast<double>(beams.endpoints.size());
-  }
+  e.fitPerBeam = map_.field(e.region).meanLogLikelihood(e.regionPose, beams.endpoints);
   estimate_ = e;
 }
 

@@ -107,11 +107,7 @@ const RegionRecognizer::RegionRaster& RegionRecognizer::raster(RegionId region) 
 }
 
 double RegionRecognizer::fit(RegionId region, const Pose2D& regionPose, const std::vector<Eigen::Vector2d>& points) const {
-  if (points.empty()) return 0.0;
-  const LikelihoodField& field = map_.field(region);
-  double sum = 0.0;
-  for (const Eigen::Vector2d& p : points) sum += field.logLikelihood(transformPoint(regionPose, p));
-  return sum / double(points.size());
+  return map_.field(region).meanLogLikelihood(regionPose, points);
 }
 
 Pose2D RegionRecognizer::refine(RegionId region, Pose2D pose, const std::vector<Eigen::Vector2d>& points) const {

@@ -4,15 +4,15 @@
 #include <cmath>
 #include <limits>
 
+#include "core/lines/ScanPoints.h"
+
 namespace rgnav::testing {
 namespace {
 
 const Pose2D kFrame2{8.0, 0.5, 0.4};
 
-Eigen::Vector2d toFrame(const Pose2D& frame, const Eigen::Vector2d& p) {
-  const Pose2D q = between(frame, Pose2D{p.x(), p.y(), 0.0});
-  return {q.x, q.y};
-}
+// A map point in `frame`.
+Eigen::Vector2d toFrame(const Pose2D& frame, const Eigen::Vector2d& p) { return transformPoint(inverse(frame), p); }
 
 RegionView room(RegionId id, const Pose2D& frame, const std::vector<Segment2>& walls, double x0) {
   RegionView r;
