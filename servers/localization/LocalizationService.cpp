@@ -32,10 +32,6 @@ PoseEstimate movedOn(const PoseEstimate& e, const Pose2D& odometryAtUpdate, cons
   return out;
 }
 
-LocalizationRegion localizationRegion(const RegionView& r) {
-  return {r.summary.id, r.summary.frame, r.summary.scans, r.lines, r.freespace, r.summary.gateways};
-}
-
 }  // namespace
 
 LocalizationService::LocalizationService(const MclConfig& config, const ClientSettings& settings,
@@ -127,10 +123,7 @@ void LocalizationService::applyMap(const KernelMapChanges& changes) {
     if (removed.count(mcl_.particles()[i].region)) orphans.push_back({i, mcl_.mapPose(mcl_.particles()[i])});
   for (const RegionId id : changes.removed) map_.removeRegion(id);
   for (const RegionView& r : changes.regions) map_.setRegion(localizationRegion(r));
-  std::vector<GatewayView> held;  // the hand-over needs both sides' regions
-  for (const GatewayView& g : changes.gateways)
-    if (map_.hasRegion(g.sideA) && map_.hasRegion(g.sideB)) held.push_back(g);
-  map_.setGateways(held);
+  map_.setGateways(changes.gateways);
   mapRevision_ = changes.revision;
   health_.add("map_refreshes");
   health_.set("regions_fetched", copy_.regionsFetched());

@@ -14,6 +14,10 @@ Segment2 transformed(const Pose2D& frame, const Segment2& s) { return {transform
 
 }  // namespace
 
+LocalizationRegion localizationRegion(const RegionView& r) {
+  return {r.summary.id, r.summary.frame, r.summary.scans, r.lines, r.freespace, r.summary.gateways};
+}
+
 LocalizationMap::LocalizationMap(const BeamModelConfig& config) : config_(config) {
   MclConfig whole;
   whole.beam = config;
@@ -64,8 +68,7 @@ void LocalizationMap::setGateways(const std::vector<GatewayView>& gateways) {
 LocalizationMap LocalizationMap::fromViews(const std::vector<RegionView>& regions,
                                            const std::vector<GatewayView>& gateways, const BeamModelConfig& config) {
   LocalizationMap map(config);
-  for (const RegionView& r : regions)
-    map.setRegion({r.summary.id, r.summary.frame, r.summary.scans, r.lines, r.freespace, r.summary.gateways});
+  for (const RegionView& r : regions) map.setRegion(localizationRegion(r));
   map.setGateways(gateways);
   return map;
 }

@@ -44,18 +44,24 @@ struct LocalizationGateway {
   Eigen::Vector2d centre = Eigen::Vector2d::Zero();  // midpoint of the crossing points
 };
 
+// A region of the kernel's view as the localization keeps it; its revision is its scan count
+// (RegionSummaryView::scans).
+LocalizationRegion localizationRegion(const RegionView& region);
+
 class LocalizationMap {
  public:
   explicit LocalizationMap(const BeamModelConfig& config);
 
-  // Adds or replaces a region (its field is rebuilt lazily if the revision changed). Gateways
-  // with a side unknown, both sides in one region, or neutralised are not kept.
+  // Adds or replaces a region (its field is rebuilt lazily if the revision changed).
   void setRegion(LocalizationRegion region);
+  // Replaces the gateways. Those with a side unknown, both sides in one region, or neutralised
+  // are not kept; one with a side whose region is not in the map joins nothing until that
+  // region is set.
   void setGateways(const std::vector<GatewayView>& gateways);
   void removeRegion(RegionId id);
 
-  // From the kernel's views (e.g. the Localization module's copy of the map, or an evaluation's
-  // in-process kernel); a region's revision is its scan count (RegionSummaryView::scans).
+  // From the kernel's views (e.g. an evaluation's in-process kernel), each region as
+  // localizationRegion gives it.
   static LocalizationMap fromViews(const std::vector<RegionView>& regions, const std::vector<GatewayView>& gateways,
                                    const BeamModelConfig& config);
   // The global-map baseline (see above) of the same views.
