@@ -7,6 +7,10 @@
 
 namespace rgnav {
 
+bool poseWithin(const Pose2D& a, const Pose2D& b, double m, double rad) {
+  return std::hypot(a.x - b.x, a.y - b.y) <= m && std::abs(normalizeAngle(a.theta - b.theta)) <= rad;
+}
+
 LocalTruth::LocalTruth(std::vector<ScanPlacement> scans, const Pose2D& mapToWorld, double sigmaM)
     : scans_(std::move(scans)), worldToMap_(inverse(mapToWorld)), sigmaM_(sigmaM) {}
 

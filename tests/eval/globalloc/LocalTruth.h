@@ -20,6 +20,10 @@ struct ScanPlacement {
   Eigen::Vector2d map = Eigen::Vector2d::Zero();    // corrected position in the map
 };
 
+// Whether estimate `a` lies within `m` metres and `rad` radians of the truth `b` (the success
+// test of the global localization and kidnap evaluations).
+bool poseWithin(const Pose2D& a, const Pose2D& b, double m, double rad);
+
 class LocalTruth {
  public:
   // `mapToWorld`: the global placement, used where no mapped scan is near.

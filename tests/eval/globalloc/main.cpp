@@ -83,10 +83,6 @@ struct Totals {
   }
 };
 
-bool within(const Pose2D& a, const Pose2D& b, double m, double rad) {
-  return std::hypot(a.x - b.x, a.y - b.y) <= m && std::abs(normalizeAngle(a.theta - b.theta)) <= rad;
-}
-
 struct Trial {
   bool success = false, wrong = false, wrongClaim = false, firstTop1 = false, firstAny = false;
   double travelToConverge = 0.0, travel = 0.0;
@@ -120,18 +116,18 @@ Trial runTrial(const LoadedWorld& world, const GridPlanner& planner, const std::
     if (!firstSeen && !localizer.candidates().empty()) {
       firstSeen = true;
       const auto& c = localizer.candidates();
-      t.firstTop1 = within(c.front().mapPose, truth, 0.5, 15.0 * M_PI / 180.0);
+      t.firstTop1 = poseWithin(c.front().mapPose, truth, 0.5, 15.0 * M_PI / 180.0);
       t.firstAny = std::any_of(c.begin(), c.end(), [&](const PoseCandidate& p) {
-        return within(p.mapPose, truth, 0.5, 15.0 * M_PI / 180.0);
+        return poseWithin(p.mapPose, truth, 0.5, 15.0 * M_PI / 180.0);
       });
     }
     if (const std::optional<PoseEstimate> f = localizer.estimate()) {
-      if (within(f->mapPose, truth, kToleranceM, kToleranceRad)) t.fitRight.push_back(f->fitPerBeam);
-      if (!within(f->mapPose, truth, kClaimM, kClaimRad)) t.fitWrong.push_back(f->fitPerBeam);
+      if (poseWithin(f->mapPose, truth, kToleranceM, kToleranceRad)) t.fitRight.push_back(f->fitPerBeam);
+      if (!poseWithin(f->mapPose, truth, kClaimM, kClaimRad)) t.fitWrong.push_back(f->fitPerBeam);
     }
     const std::optional<PoseEstimate> e = localizer.localized() ? localizer.estimate() : std::nullopt;
-    const bool good = e && within(e->mapPose, truth, kToleranceM, kToleranceRad);
-    if (e && !within(e->mapPose, truth, kClaimM, kClaimRad)) t.wrongClaim = true;
+    const bool good = e && poseWithin(e->mapPose, truth, kToleranceM, kToleranceRad);
+    if (e && !poseWithin(e->mapPose, truth, kClaimM, kClaimRad)) t.wrongClaim = true;
     t.localizedScans += e.has_value();
     t.goodScans += good;
     if (good && !inStreak) t.travelToConverge = t.travel;

@@ -23,8 +23,10 @@
 #include "core/nav/localization/GlobalLocalizer.h"
 #include "core/sim/Simulation.h"
 #include "core/sim/StartPose.h"
+#include "tests/eval/globalloc/LocalTruth.h"
 #include "tests/eval/globalloc/MappedFloor.h"
 #include "tests/eval/globalloc/RandomGoalDriver.h"
+#include "tests/support/Statistics.h"
 #include "tools/common/CommandLine.h"
 
 namespace po = boost::program_options;
@@ -43,16 +45,6 @@ struct Options {
 };
 
 constexpr double kToleranceM = 0.3, kToleranceRad = 10.0 * M_PI / 180.0;
-
-bool within(const Pose2D& a, const Pose2D& b) {
-  return std::hypot(a.x - b.x, a.y - b.y) <= kToleranceM && std::abs(normalizeAngle(a.theta - b.theta)) <= kToleranceRad;
-}
-
-double median(std::vector<double> v) {
-  if (v.empty()) return 0.0;
-  std::nth_element(v.begin(), v.begin() + std::ptrdiff_t(v.size() / 2), v.end());
-  return v[v.size() / 2];
-}
 
 struct Segment {
   bool detected = false, recovered = false;
@@ -109,7 +101,7 @@ int run(const Options& options) {
       localizer.update(*step.scan);
       const Pose2D truth = truthInMap.toMap(step.truePose);
       const std::optional<PoseEstimate> e = localizer.localized() ? localizer.estimate() : std::nullopt;
-      const bool good = e && within(e->mapPose, truth);
+      const bool good = e && poseWithin(e->mapPose, truth, kToleranceM, kToleranceRad);
       if (good && !inStreak) s.travelToRecover = travel;
       inStreak = good;
       s.recovered = good;
@@ -131,7 +123,7 @@ int run(const Options& options) {
     if (s.recovered) travel.push_back(s.travelToRecover);
   }
   std::printf("kidnap: jumps=%zu detected=%zu recovered=%zu recover_travel_m_median=%.2f\n", segments.size(), detected,
-              recovered, median(travel));
+              recovered, testing::median(travel));
   return 0;
 }
 
