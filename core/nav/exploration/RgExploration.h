@@ -1,0 +1,43 @@
+// RgExploration: region-by-region exploration (thesis chapter 7, "future work" there): the robot
+// completes the region it is in before it traverses any new gateway, i.e. it drives to the
+// frontiers of the current region (nearest by driving distance first) until none is left that can
+// be reached; then it takes the next untraversed gateway from its queue and drives through it.
+// Untraversed gateways: gateways of the map with a side whose region is not known yet (the far
+// side unexplored), queued in the order they are first seen. "Breadth first" over gateways found
+// in different regions: the queue is first-in first-out across all regions, so the gateways of a
+// region explored earlier are all taken before those found later, deeper in the building, as a
+// breadth-first search over the RG graph visits the nearer regions first. A gateway the robot
+// cannot reach, or that is traversed meanwhile (both sides known), leaves the queue. When the
+// queue is empty the frontiers of every region are taken, nearest first (a region left before it
+// was complete, say because a door was closed). Done when no reachable frontier and no gateway is
+// left.
+#pragma once
+
+#include <deque>
+#include <map>
+#include <set>
+
+#include "core/nav/exploration/ExplorationStrategy.h"
+#include "core/nav/exploration/Frontiers.h"
+
+namespace rgnav {
+
+class RgExploration : public ExplorationStrategy {
+ public:
+  explicit RgExploration(const ExplorationConfig& config);
+  std::string name() const override { return "rg"; }
+  ExplorationGoal next(const ExplorationInput& input, const PathLength& pathLength) override;
+  void failed(const ExplorationGoal& goal) override;
+
+  // The untraversed gateways, in the order they will be taken.
+  const std::deque<GatewayId>& queue() const { return queue_; }
+
+ private:
+  ExplorationConfig config_;
+  std::deque<GatewayId> queue_;
+  std::set<GatewayId> seen_;
+  std::map<GatewayId, std::size_t> gatewayFailures_;
+  std::vector<std::pair<Eigen::Vector2d, std::size_t>> frontierFailures_;  // failed viewpoints
+};
+
+}  // namespace rgnav
