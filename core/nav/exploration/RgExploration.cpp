@@ -80,8 +80,9 @@ ExplorationGoal RgExploration::next(const ExplorationInput& input, const PathLen
       continue;
     }
     std::ostringstream reason;
-    reason << "no reachable frontier left in region " << input.currentRegion << ": through untraversed gateway " << *it
-           << " of region " << g->known << " (" << queue_.size() << " queued) to " << text(*point);
+    reason << "no reachable frontier left in region " << input.currentRegion << ": through untraversed gateway " << *it;
+    if (!g->known.isNone()) reason << " of region " << g->known;
+    reason << " (" << queue_.size() << " queued) to " << text(*point);
     return {ExplorationGoal::Kind::Gateway, *point, RegionId{}, *it, reason.str()};
   }
 
