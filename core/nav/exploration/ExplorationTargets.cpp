@@ -133,21 +133,27 @@ std::optional<std::pair<std::size_t, double>> Reachability::nearest(const std::v
   return std::nullopt;
 }
 
-std::optional<Eigen::Vector2d> drivePoint(const OpenGateway& gateway, const ExplorationGrid& grid, double robotRadiusM,
-                                          Reachability& reach) {
+std::vector<Eigen::Vector2d> drivePointCandidates(const OpenGateway& gateway, const ExplorationGrid& grid,
+                                                  double robotRadiusM) {
+  std::vector<Eigen::Vector2d> out;
   const double span = (gateway.far - gateway.near).norm(), cell = grid.resolutionM();
-  if (span <= 0.0) return std::nullopt;
+  if (span <= 0.0) return out;
   const Eigen::Vector2d middle = 0.5 * (gateway.near + gateway.far), away = (gateway.far - gateway.near) / span;
-  std::size_t planned = 0;
-  for (double past = 0.5 * span; past >= cell - 1e-9 && planned < kDrivePointPlans; past -= cell) {
+  for (double past = 0.5 * span; past >= cell - 1e-9; past -= cell) {
     const Eigen::Vector2d p = middle + away * past;
     int col = 0, row = 0;
-    if (!grid.cellOf(p, col, row) || grid.at(col, row) != ExplorationCell::Free ||
-        grid.wallDistanceM(col, row) < goalClearanceM(grid, robotRadiusM))
-      continue;
-    ++planned;
-    if (reach.lengthTo(p)) return p;
+    if (grid.cellOf(p, col, row) && grid.at(col, row) == ExplorationCell::Free &&
+        grid.wallDistanceM(col, row) >= goalClearanceM(grid, robotRadiusM))
+      out.push_back(p);
   }
+  return out;
+}
+
+std::optional<Eigen::Vector2d> drivePoint(const OpenGateway& gateway, const ExplorationGrid& grid, double robotRadiusM,
+                                          Reachability& reach) {
+  const std::vector<Eigen::Vector2d> candidates = drivePointCandidates(gateway, grid, robotRadiusM);
+  for (std::size_t i = 0; i < std::min(candidates.size(), kDrivePointPlans); ++i)
+    if (reach.lengthTo(candidates[i])) return candidates[i];
   return std::nullopt;
 }
 

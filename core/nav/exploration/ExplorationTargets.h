@@ -80,7 +80,11 @@ class Reachability {
   std::vector<std::pair<Eigen::Vector2d, std::optional<double>>> asked_;
 };
 
-// The gateway's drive point (see above), if any.
+// The gateway's drive point candidates that the grid shows free and clear of the lines, farthest
+// beyond the line first (see above); none planned.
+std::vector<Eigen::Vector2d> drivePointCandidates(const OpenGateway& gateway, const ExplorationGrid& grid,
+                                                  double robotRadiusM);
+// The gateway's drive point: the first of its first few candidates that the planner plans to.
 std::optional<Eigen::Vector2d> drivePoint(const OpenGateway& gateway, const ExplorationGrid& grid, double robotRadiusM,
                                           Reachability& reach);
 
