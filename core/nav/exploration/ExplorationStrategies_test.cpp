@@ -85,6 +85,7 @@ class ExplorationStrategiesTest : public CppUnit::TestFixture {
   CPPUNIT_TEST_SUITE(ExplorationStrategiesTest);
   CPPUNIT_TEST(rgCompletesTheCurrentRegionBeforeAnyGateway);
   CPPUNIT_TEST(rgDrivesThroughAnUntraversedDoorToAPlannablePoint);
+  CPPUNIT_TEST(rgCompletesARoomItsHallwaySawInto);
   CPPUNIT_TEST(rgTakesGatewaysFirstInFirstOutAcrossRegions);
   CPPUNIT_TEST(rgDropsAGatewayFailedTooOften);
   CPPUNIT_TEST(rgIsDoneWhenNothingIsLeft);
@@ -125,6 +126,23 @@ class ExplorationStrategiesTest : public CppUnit::TestFixture {
     CPPUNIT_ASSERT(goal.point.x() > 4.05 && goal.point.x() <= 4.5);  // past the door's line
     CPPUNIT_ASSERT_DOUBLES_EQUAL(2.0, goal.point.y(), 1e-9);
     CPPUNIT_ASSERT(length(goal.point).has_value());
+  }
+
+  void rgCompletesARoomItsHallwaySawInto() {
+    // Region 1 saw most of room 2 through door 1 before the door was known: its freespace covers
+    // the room up to x = 7.5 and, through the gap in room 2's top wall, a little beyond, so the
+    // frontier there is region 1's by its cells. In room 2, it is room 2's to complete before
+    // door 2 (open, in region 1's left wall).
+    const std::vector<Segment2> walls{{{0, 0}, {4, 0}}, {{0, 4}, {4, 4}}, {{0, 0}, {0, 1.6}},
+                                      {{0, 2.4}, {0, 4}}, {{4, 0}, {4, 1.6}}, {{4, 2.4}, {4, 4}}};
+    const RegionView r1 = exploredRegion(kR1, {}, walls, {{{-0.3, 0.6}, {0.0, 3.4}}, {{0.0, 0.0}, {4.0, 4.0}}, {{4.0, 0.0}, {7.5, 4.3}}});
+    const auto map = planningMap({r1, room(kR2, 4.0, true, false, true)},
+                                 {doorAt(GatewayId{1}, 4.0, kR1, kR2), doorAt(GatewayId{2}, 0.0, kNone, kR1)});
+    rgnav::RgExploration rg({});
+    const ExplorationGoal goal = rg.next({map, {6.0, 2.0, 0.0}, kR2}, straightLine({6.0, 2.0}));
+    CPPUNIT_ASSERT(goal.kind == Kind::Frontier);
+    CPPUNIT_ASSERT(goal.region == kR2);
+    CPPUNIT_ASSERT((goal.point - Vector2d(6.0, 3.65)).norm() < 0.3);  // below the gap
   }
 
   void rgTakesGatewaysFirstInFirstOutAcrossRegions() {
