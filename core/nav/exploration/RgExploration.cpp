@@ -1,6 +1,9 @@
-// Region-by-region exploration (RgExploration.h; thesis chapter 7). Deliberate differences from
-// the thesis, which leaves the strategy to future work: the gateway queue is FIFO across regions
-// (breadth first over the RG graph), a frontier at an open gateway is the gateway's (see
+// Region-by-region exploration (RgExploration.h; thesis chapter 7: "each region should first be
+// completely explored before traversing any new gateway. Gateways that have not yet been traversed
+// can be stored on a stack ... visit these gateways in a breadth first manner"). Deliberate
+// differences from the thesis, which leaves the strategy to future work: the untraversed gateways
+// wait in a first-in first-out queue across regions, not a stack, since breadth first is what the
+// thesis asks for; a frontier at an open gateway is the gateway's (see
 // ExplorationTargets.h), a gateway is driven through to a point just past its line that the route
 // planner accepts, and a frontier is also the current region's when the current region's
 // freespace holds its viewpoint (where a lower region's freespace overlaps the current one).
