@@ -8,10 +8,9 @@
 
 #include "core/common/Errors.h"
 #include "core/nav/exploration/NearestFrontierExploration.h"
+#include "core/nav/exploration/PlannerPathLength.h"
 #include "core/nav/exploration/RgExploration.h"
 #include "core/nav/exploration/testing/ExplorationRooms.h"
-#include "core/nav/grid/PlanningErrors.h"
-#include "core/nav/planning/RoutePlanner.h"
 
 using Eigen::Vector2d;
 using rgnav::ExplorationGoal;
@@ -69,16 +68,6 @@ PathLength straightLine(const Vector2d& robot) {
   return [robot](const Vector2d& goal) -> std::optional<double> { return (goal - robot).norm(); };
 }
 
-PathLength planned(const rgnav::RoutePlanner& planner, const Pose2D& robot) {
-  return [&planner, robot](const Vector2d& goal) -> std::optional<double> {
-    try {
-      return planner.plan(robot, rgnav::PlanGoal::at(goal)).lengthM;
-    } catch (const rgnav::NoPathError&) {
-      return std::nullopt;
-    }
-  };
-}
-
 }  // namespace
 
 class ExplorationStrategiesTest : public CppUnit::TestFixture {
@@ -104,7 +93,7 @@ class ExplorationStrategiesTest : public CppUnit::TestFixture {
     planner.setMap(map);
     const Pose2D robot{3.2, 2.0, 0.0};  // nearer the door than the gap
     rgnav::RgExploration rg({});
-    const ExplorationGoal goal = rg.next({map, robot, kR1}, planned(planner, robot));
+    const ExplorationGoal goal = rg.next({map, robot, kR1}, rgnav::plannerPathLength(planner, robot));
     CPPUNIT_ASSERT(goal.kind == Kind::Frontier);
     CPPUNIT_ASSERT(goal.region == kR1);
     CPPUNIT_ASSERT((goal.point - Vector2d(2.0, 3.4)).norm() < 0.3);  // below the gap in the top wall
@@ -118,7 +107,7 @@ class ExplorationStrategiesTest : public CppUnit::TestFixture {
     planner.setMap(map);
     const Pose2D robot{1.0, 1.0, 0.0};
     rgnav::RgExploration rg({});
-    const PathLength length = planned(planner, robot);
+    const PathLength length = rgnav::plannerPathLength(planner, robot);
     const ExplorationGoal goal = rg.next({map, robot, kR1}, length);
     CPPUNIT_ASSERT(goal.kind == Kind::Gateway);  // not the frontier of the freespace past the door
     CPPUNIT_ASSERT(goal.gateway == GatewayId{1});

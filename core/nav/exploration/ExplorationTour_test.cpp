@@ -9,6 +9,7 @@
 #include <cstdio>
 
 #include "core/nav/exploration/Explorer.h"
+#include "core/nav/exploration/PlannerPathLength.h"
 #include "core/nav/grid/PlanningErrors.h"
 #include "core/nav/planning/KernelPlanningMap.h"
 #include "core/nav/planning/RoutePlanner.h"
@@ -44,13 +45,7 @@ Outcome explore(const std::string& strategy, double detectRangeM) {
   for (double now = 0.0; !explorer.done() && explorer.goalsGiven() < kMaxGoals; now += 10.0) {
     planner.setMap(rgnav::planningMapOf(kernel));
     const rgnav::Pose2D pose{robot.x(), robot.y(), 0.0};
-    const rgnav::PathLength length = [&](const Vector2d& goal) -> std::optional<double> {
-      try {
-        return planner.plan(pose, rgnav::PlanGoal::at(goal)).lengthM;
-      } catch (const rgnav::NoPathError&) {
-        return std::nullopt;
-      }
-    };
+    const rgnav::PathLength length = rgnav::plannerPathLength(planner, pose);
     const rgnav::ExplorerStep step =
         explorer.update({planner.map(), pose, rgnav::mapSummary(kernel).current}, drive, now, length);
     if (step.action != rgnav::ExplorerStep::Action::DriveTo) continue;
