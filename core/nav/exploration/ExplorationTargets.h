@@ -14,9 +14,11 @@
 //     region (it cuts a region's freespace at depth_m = 0.3 m beyond its own doors, the crossing
 //     points lie 0.5 m off the door line), so it is rarely plannable. The candidates run from
 //     the far crossing point back towards the gateway's line (the middle of the two crossing
-//     points) in steps of one grid cell, ending one cell before the line; the farthest that the
-//     grid shows free and clear of the lines, and that the planner then plans to, is the goal:
-//     the robot ends on the far side, the traversal is reported, the kernel opens the new region.
+//     points) in steps of one grid cell, ending one cell past the line; of those the grid shows
+//     free and goalClearanceM clear of the lines, the first of at most three that the planner
+//     plans to is the goal: the robot ends on the far side (the collision avoidance stops within
+//     0.1 m of a goal; the kernel's cut leaves 0.2 to 0.3 m past a door to aim at), the traversal
+//     is reported, the kernel opens the new region.
 //     A gateway with no such point cannot be traversed by driving to a goal; it is not driven to
 //     at all (driving to its near crossing point would leave the robot in front of it for ever).
 //   - Frontiers at open gateways belong to the gateway, not to the region: the region's freespace
@@ -27,10 +29,11 @@
 //     times is skipped. A frontier still there while the robot stands at its viewpoint was looked
 //     at and stays (glass, a region cut): counted as a failure and skipped this time.
 //   - Reachability: the caller's PathLength, asked for the few nearest candidates by straight
-//     line first (a plan each), per call only (nothing is kept across map revisions). When no
-//     candidate is reachable and the robot's own position is not either, the planner cannot start
-//     from where the robot stands (pushed into a wall's inflation): then nothing is dropped and the
-//     straight-line distance stands in, so a transient start problem never ends exploration.
+//     line first (a plan each), within one call only (nothing is kept across map revisions). The
+//     first time a candidate does not plan, the robot's own position is asked: if that does not
+//     plan either, the planner cannot start from where the robot stands (pushed into a wall's
+//     inflation), and the straight-line distance stands in for every candidate of the call, so a
+//     transient start problem drops nothing and never ends exploration.
 #pragma once
 
 #include <Eigen/Core>
