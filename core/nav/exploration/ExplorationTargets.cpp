@@ -157,16 +157,17 @@ std::optional<Eigen::Vector2d> drivePoint(const OpenGateway& gateway, const Expl
   return std::nullopt;
 }
 
-std::vector<Frontier> candidateFrontiers(const std::vector<Frontier>& frontiers, const std::vector<OpenGateway>& gateways,
-                                         const Eigen::Vector2d& robot, PointFailures& failures, std::size_t maxFailures) {
-  std::vector<Frontier> out;
-  for (const Frontier& f : frontiers) {
-    if (atOpenGateway(f, gateways) || failuresAt(failures, f.viewpoint) >= maxFailures) continue;
+Survey survey(const ExplorationInput& input, const ExplorationConfig& config, PointFailures& failures) {
+  const Eigen::Vector2d robot(input.robot.x, input.robot.y);
+  Survey out{ExplorationGrid::fromMap(input.map, config.grid), {}, {}};
+  out.open = openGateways(input.map, out.grid, robot);
+  for (const Frontier& f : findFrontiers(out.grid, config.frontier, config.robotRadiusM)) {
+    if (atOpenGateway(f, out.open) || failuresAt(failures, f.viewpoint) >= config.maxGoalFailures) continue;
     if ((f.viewpoint - robot).norm() <= kSameGoalM) {
       countFailure(failures, f.viewpoint);
       continue;
     }
-    out.push_back(f);
+    out.frontiers.push_back(f);
   }
   return out;
 }

@@ -91,9 +91,14 @@ std::vector<Eigen::Vector2d> drivePointCandidates(const OpenGateway& gateway, co
 std::optional<Eigen::Vector2d> drivePoint(const OpenGateway& gateway, const ExplorationGrid& grid, double robotRadiusM,
                                           Reachability& reach);
 
-// The frontiers worth a goal now: not at open gateways, their viewpoints not failed out, nor the
-// one the robot stands at (counted in `failures`).
-std::vector<Frontier> candidateFrontiers(const std::vector<Frontier>& frontiers, const std::vector<OpenGateway>& gateways,
-                                         const Eigen::Vector2d& robot, PointFailures& failures, std::size_t maxFailures);
+// What a strategy chooses from on the map now: its grid, its open gateways, and the frontiers worth
+// a goal (not at open gateways, their viewpoints not failed out, nor the one the robot stands
+// at, which is counted in `failures`).
+struct Survey {
+  ExplorationGrid grid;
+  std::vector<OpenGateway> open;
+  std::vector<Frontier> frontiers;
+};
+Survey survey(const ExplorationInput& input, const ExplorationConfig& config, PointFailures& failures);
 
 }  // namespace rgnav

@@ -17,19 +17,16 @@ NearestFrontierExploration::NearestFrontierExploration(const ExplorationConfig& 
 
 ExplorationGoal NearestFrontierExploration::next(const ExplorationInput& input, const PathLength& pathLength) {
   const Eigen::Vector2d robot(input.robot.x, input.robot.y);
-  const ExplorationGrid grid = ExplorationGrid::fromMap(input.map, config_.grid);
-  const std::vector<OpenGateway> open = openGateways(input.map, grid, robot);
-  const std::vector<Frontier> frontiers =
-      candidateFrontiers(findFrontiers(grid, config_.frontier, config_.robotRadiusM), open, robot, frontierFailures_,
-                         config_.maxGoalFailures);
+  const Survey now = survey(input, config_, frontierFailures_);
+  const std::vector<Frontier>& frontiers = now.frontiers;
   Reachability reach(pathLength, robot);
   std::vector<Eigen::Vector2d> points;
   for (const Frontier& f : frontiers) points.push_back(f.viewpoint);
   std::vector<GatewayId> gateways;
   // A gateway's candidate farthest beyond its line stands for it (planned only if it is among the
   // nearest, so that many open gateways do not cost a plan each).
-  for (const OpenGateway& g : open) {
-    const std::vector<Eigen::Vector2d> candidates = drivePointCandidates(g, grid, config_.robotRadiusM);
+  for (const OpenGateway& g : now.open) {
+    const std::vector<Eigen::Vector2d> candidates = drivePointCandidates(g, now.grid, config_.robotRadiusM);
     if (candidates.empty() || failuresAt(frontierFailures_, candidates.front()) >= config_.maxGoalFailures) continue;
     if ((candidates.front() - robot).norm() <= kSameGoalM) {
       countFailure(frontierFailures_, candidates.front());

@@ -59,8 +59,9 @@ RgExploration::RgExploration(const ExplorationConfig& config) : config_(config) 
 
 ExplorationGoal RgExploration::next(const ExplorationInput& input, const PathLength& pathLength) {
   const Eigen::Vector2d robot(input.robot.x, input.robot.y);
-  const ExplorationGrid grid = ExplorationGrid::fromMap(input.map, config_.grid);
-  const std::vector<OpenGateway> open = openGateways(input.map, grid, robot);
+  const Survey now = survey(input, config_, frontierFailures_);
+  const std::vector<OpenGateway>& open = now.open;
+  const std::vector<Frontier>& frontiers = now.frontiers;
 
   // The queue: traversed (or vanished, neutralised) gateways leave it, new open ones join its end.
   std::erase_if(queue_, [&](GatewayId id) {
@@ -70,9 +71,6 @@ ExplorationGoal RgExploration::next(const ExplorationInput& input, const PathLen
     if (seen_.insert(g.id).second) queue_.push_back(g.id);
 
   Reachability reach(pathLength, robot);
-  const std::vector<Frontier> frontiers =
-      candidateFrontiers(findFrontiers(grid, config_.frontier, config_.robotRadiusM), open, robot, frontierFailures_,
-                         config_.maxGoalFailures);
 
   // 1. The current region's frontiers.
   std::vector<Frontier> here;
@@ -91,7 +89,7 @@ ExplorationGoal RgExploration::next(const ExplorationInput& input, const PathLen
   // kernel may lag, so it stays queued until it failed maxGoalFailures times).
   for (auto it = queue_.begin(); it != queue_.end();) {
     const auto g = std::find_if(open.begin(), open.end(), [&](const OpenGateway& o) { return o.id == *it; });
-    const auto point = drivePoint(*g, grid, config_.robotRadiusM, reach);
+    const auto point = drivePoint(*g, now.grid, config_.robotRadiusM, reach);
     if (!point || (*point - robot).norm() <= kSameGoalM) {
       if (!point || ++gatewayFailures_[*it] >= config_.maxGoalFailures) {
         it = queue_.erase(it);
