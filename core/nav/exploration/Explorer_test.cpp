@@ -1,7 +1,7 @@
 // Tests the explorer's loop against a scripted strategy: the first goal at once; while driving,
 // the strategy asked again only every regoalPeriodS, a different goal replacing the current one
 // and an equal one (within two grid cells) keeping it; a failed drive counted with the strategy;
-// done once the strategy says so, and for good.
+// done once the strategy says so, and for good; a drive the caller lost gets its goal again.
 #include <cppunit/extensions/HelperMacros.h>
 
 #include <deque>
@@ -50,6 +50,7 @@ class ExplorerTest : public CppUnit::TestFixture {
   CPPUNIT_TEST_SUITE(ExplorerTest);
   CPPUNIT_TEST(keepsReplacesAndFinishes);
   CPPUNIT_TEST(aFailedDriveIsCountedAndAnotherGoalGiven);
+  CPPUNIT_TEST(aLostDriveGetsAGoalAgain);
   CPPUNIT_TEST(aBadConfigurationIsRefused);
   CPPUNIT_TEST_SUITE_END();
 
@@ -95,6 +96,20 @@ class ExplorerTest : public CppUnit::TestFixture {
     CPPUNIT_ASSERT_EQUAL(std::size_t(1), script.failures.size());
     CPPUNIT_ASSERT(script.failures[0] == frontierAt(1, 1));
     CPPUNIT_ASSERT_EQUAL(std::size_t(2), explorer.goalsGiven());
+  }
+
+  void aLostDriveGetsAGoalAgain() {
+    Script script;
+    script.goals = {frontierAt(1, 1)};
+    rgnav::Explorer explorer(std::make_unique<ScriptedStrategy>(script), {});
+    const rgnav::PlanningMap map;
+    const rgnav::ExplorationInput input{map, {}, {}};
+    const auto length = [](const Vector2d&) { return std::optional<double>(1.0); };
+    explorer.update(input, DriveOutcome::None, 0.0, length);
+    // No drive runs to the goal (the caller lost it): the goal is given again at once, not kept.
+    const ExplorerStep step = explorer.update(input, DriveOutcome::None, 0.5, length);
+    CPPUNIT_ASSERT(step.action == Action::DriveTo && step.goal == frontierAt(1, 1));
+    CPPUNIT_ASSERT(script.failures.empty());
   }
 
   void aBadConfigurationIsRefused() {
