@@ -1,12 +1,14 @@
 // Tests exploration end to end in process: the RG Mapping Kernel maps a synthetic hallway with two
-// rooms behind doors (SyntheticTour.h: ray-cast scans, a fake door detector) while the robot
-// drives the route planner's paths to the explorer's goals. Both strategies must pass both doors
-// (the kernel opens a region for each room: three regions, no gateway with an unknown side) and
-// then say Done, within a bounded number of goals; with doors detected early, through at least
-// one gateway goal. Prints each goal's reason and a summary line per run.
+// rooms (and one with four) behind doors (SyntheticTour.h: ray-cast scans, a fake door detector)
+// while the robot drives the route planner's paths to the explorer's goals. Both strategies must
+// pass every door (the kernel opens a region for each room: three or five regions, no gateway with
+// an unknown side) and then say Done, within a bounded number of goals; with doors detected early,
+// through at least one gateway goal. Prints each goal's reason and a summary line per run.
 #include <cppunit/extensions/HelperMacros.h>
 
+#include <cstdint>
 #include <cstdio>
+#include <utility>
 
 #include "core/nav/exploration/Explorer.h"
 #include "core/nav/exploration/PlannerPathLength.h"
@@ -19,16 +21,38 @@ using Eigen::Vector2d;
 
 namespace {
 
+// A hallway (x in [0, 20], y in [0, 2]) with four 4 m x 4 m rooms behind 0.9 m doors, two north
+// and two south of it, at x in [2, 6] and [12, 16].
+rgnav::testing::TourWorld hallwayWithFourRooms() {
+  rgnav::testing::TourWorld w;
+  w.walls = {{{0, 0}, {0, 2}}, {{20, 0}, {20, 2}}};
+  for (const double y : {0.0, 2.0}) {
+    w.walls.push_back({{0, y}, {3.55, y}});
+    w.walls.push_back({{4.45, y}, {13.55, y}});
+    w.walls.push_back({{14.45, y}, {20, y}});
+    const double far = y == 0.0 ? -4.0 : 6.0;
+    for (const double x0 : {2.0, 12.0}) {
+      w.walls.push_back({{x0, y}, {x0, far}});
+      w.walls.push_back({{x0 + 4, y}, {x0 + 4, far}});
+      w.walls.push_back({{x0, far}, {x0 + 4, far}});
+      const rgnav::DetectorGatewayId id{static_cast<std::uint64_t>(30 + w.doors.size())};
+      w.doors.push_back({id, {x0 + 1.55, y}, {x0 + 2.45, y}, rgnav::testing::DoorReports::All});
+    }
+  }
+  return w;
+}
+
 struct Outcome {
   bool done = false;
   std::size_t goals = 0, gatewayGoals = 0, regions = 0, openGateways = 0;
   double drivenM = 0.0;
 };
 
-Outcome explore(const std::string& strategy, double detectRangeM) {
+Outcome explore(const std::string& strategy, double detectRangeM,
+                rgnav::testing::TourWorld world = rgnav::testing::hallwayWithTwoRooms()) {
   constexpr std::size_t kMaxGoals = 40;
   const rgnav::ExplorationConfig config;
-  rgnav::testing::SyntheticTour tour(rgnav::testing::hallwayWithTwoRooms(), rgnav::testing::kTourDrift, 0.25, detectRangeM);
+  rgnav::testing::SyntheticTour tour(std::move(world), rgnav::testing::kTourDrift, 0.25, detectRangeM);
   Vector2d robot(1.0, 0.9);
   tour.driveThrough({robot, {2.0, 0.9}});
   robot = {2.0, 0.9};
@@ -90,6 +114,7 @@ class ExplorationTourTest : public CppUnit::TestFixture {
     const Outcome early = explore("rg", 3.0);
     check(early);
     CPPUNIT_ASSERT(early.gatewayGoals >= 1);
+    check(explore("rg", 3.0, hallwayWithFourRooms()), 5);
   }
 
   void nearestFrontierPassesBothDoorsAndFinishes() {
@@ -97,12 +122,13 @@ class ExplorationTourTest : public CppUnit::TestFixture {
     const Outcome early = explore("frontier", 3.0);
     check(early);
     CPPUNIT_ASSERT(early.gatewayGoals >= 1);
+    check(explore("frontier", 3.0, hallwayWithFourRooms()), 5);
   }
 
  private:
-  static void check(const Outcome& out) {
+  static void check(const Outcome& out, std::size_t regions = 3) {
     CPPUNIT_ASSERT(out.done);
-    CPPUNIT_ASSERT_EQUAL(std::size_t(3), out.regions);
+    CPPUNIT_ASSERT_EQUAL(regions, out.regions);
     CPPUNIT_ASSERT_EQUAL(std::size_t(0), out.openGateways);
   }
 };
