@@ -10,6 +10,8 @@
 //     one (same kind, gateway, and point within 2 grid cells), so a drive is not restarted for
 //     nothing.
 //   - Done: once the strategy says so.
+//   - A map without regions (the kernel has not made its first region yet): Keep, the strategy is
+//     not asked (it would find nothing to explore and say Done).
 #pragma once
 
 #include <memory>

@@ -1,7 +1,8 @@
 // Tests the explorer's loop against a scripted strategy: the first goal at once; while driving,
 // the strategy asked again only every regoalPeriodS, a different goal replacing the current one
 // and an equal one (within two grid cells) keeping it; a failed drive counted with the strategy;
-// done once the strategy says so, and for good; a drive the caller lost gets its goal again.
+// done once the strategy says so, and for good; a drive the caller lost gets its goal again; a map
+// without regions is not explored yet, not done.
 #include <cppunit/extensions/HelperMacros.h>
 
 #include <deque>
@@ -40,6 +41,14 @@ class ScriptedStrategy : public rgnav::ExplorationStrategy {
   Script& script_;
 };
 
+// The scripted strategy does not look at the map; the explorer only asks it about a map with a region.
+rgnav::PlanningMap oneRegion() {
+  rgnav::PlanningMap map;
+  map.regions.emplace_back();
+  map.regions.back().summary.id = rgnav::RegionId{1};
+  return map;
+}
+
 ExplorationGoal frontierAt(double x, double y) {
   return {ExplorationGoal::Kind::Frontier, Vector2d(x, y), rgnav::RegionId{1}, {}, "frontier"};
 }
@@ -51,6 +60,7 @@ class ExplorerTest : public CppUnit::TestFixture {
   CPPUNIT_TEST(keepsReplacesAndFinishes);
   CPPUNIT_TEST(aFailedDriveIsCountedAndAnotherGoalGiven);
   CPPUNIT_TEST(aLostDriveGetsAGoalAgain);
+  CPPUNIT_TEST(anEmptyMapIsNotDone);
   CPPUNIT_TEST(aBadConfigurationIsRefused);
   CPPUNIT_TEST_SUITE_END();
 
@@ -59,7 +69,7 @@ class ExplorerTest : public CppUnit::TestFixture {
     Script script;
     script.goals = {frontierAt(1, 1), frontierAt(1.15, 1), frontierAt(5, 5), ExplorationGoal{}};
     rgnav::Explorer explorer(std::make_unique<ScriptedStrategy>(script), {});  // regoal every 3 s, 0.1 m cells
-    const rgnav::PlanningMap map;
+    const rgnav::PlanningMap map = oneRegion();
     const rgnav::ExplorationInput input{map, {}, {}};
     const auto length = [](const Vector2d&) { return std::optional<double>(1.0); };
 
@@ -86,7 +96,7 @@ class ExplorerTest : public CppUnit::TestFixture {
     Script script;
     script.goals = {frontierAt(1, 1), frontierAt(1, 1)};
     rgnav::Explorer explorer(std::make_unique<ScriptedStrategy>(script), {});
-    const rgnav::PlanningMap map;
+    const rgnav::PlanningMap map = oneRegion();
     const rgnav::ExplorationInput input{map, {}, {}};
     const auto length = [](const Vector2d&) { return std::optional<double>(1.0); };
     explorer.update(input, DriveOutcome::None, 0.0, length);
@@ -102,7 +112,7 @@ class ExplorerTest : public CppUnit::TestFixture {
     Script script;
     script.goals = {frontierAt(1, 1)};
     rgnav::Explorer explorer(std::make_unique<ScriptedStrategy>(script), {});
-    const rgnav::PlanningMap map;
+    const rgnav::PlanningMap map = oneRegion();
     const rgnav::ExplorationInput input{map, {}, {}};
     const auto length = [](const Vector2d&) { return std::optional<double>(1.0); };
     explorer.update(input, DriveOutcome::None, 0.0, length);
@@ -110,6 +120,15 @@ class ExplorerTest : public CppUnit::TestFixture {
     const ExplorerStep step = explorer.update(input, DriveOutcome::None, 0.5, length);
     CPPUNIT_ASSERT(step.action == Action::DriveTo && step.goal == frontierAt(1, 1));
     CPPUNIT_ASSERT(script.failures.empty());
+  }
+
+  void anEmptyMapIsNotDone() {
+    rgnav::Explorer explorer(rgnav::makeExplorationStrategy("rg", {}), {});
+    const rgnav::PlanningMap empty;
+    const auto length = [](const Vector2d&) { return std::optional<double>(1.0); };
+    const ExplorerStep step = explorer.update({empty, {}, {}}, DriveOutcome::None, 0.0, length);
+    CPPUNIT_ASSERT(step.action == Action::Keep);
+    CPPUNIT_ASSERT(!explorer.done() && !explorer.goal());
   }
 
   void aBadConfigurationIsRefused() {
