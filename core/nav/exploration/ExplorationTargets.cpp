@@ -114,7 +114,8 @@ std::optional<double> Reachability::lengthTo(const Eigen::Vector2d& point) {
   return length;
 }
 
-std::optional<std::pair<std::size_t, double>> Reachability::nearest(const std::vector<Eigen::Vector2d>& points) {
+std::optional<Reachability::Nearest> Reachability::nearest(
+    const std::vector<Eigen::Vector2d>& points, const std::function<std::optional<Eigen::Vector2d>(std::size_t)>& goalOf) {
   std::vector<std::size_t> order(points.size());
   std::iota(order.begin(), order.end(), 0);
   std::stable_sort(order.begin(), order.end(),
@@ -123,10 +124,12 @@ std::optional<std::pair<std::size_t, double>> Reachability::nearest(const std::v
   // decides. An approximation (a candidate farther by straight line may be nearer by driving)
   // that keeps the plans few.
   for (std::size_t first = 0; first < order.size(); first += kNearestByLine) {
-    std::optional<std::pair<std::size_t, double>> best;
+    std::optional<Nearest> best;
     for (std::size_t k = first; k < std::min(order.size(), first + kNearestByLine); ++k) {
-      const auto length = lengthTo(points[order[k]]);
-      if (length && (!best || *length < best->second)) best = std::make_pair(order[k], *length);
+      const std::optional<Eigen::Vector2d> goal = goalOf ? goalOf(order[k]) : points[order[k]];
+      if (!goal) continue;
+      const auto length = lengthTo(*goal);
+      if (length && (!best || *length < best->lengthM)) best = Nearest{order[k], *goal, *length};
     }
     if (best) return best;
   }
@@ -143,7 +146,7 @@ std::vector<Eigen::Vector2d> drivePointCandidates(const OpenGateway& gateway, co
     const Eigen::Vector2d p = middle + away * past;
     int col = 0, row = 0;
     if (grid.cellOf(p, col, row) && grid.at(col, row) == ExplorationCell::Free &&
-        grid.wallDistanceM(col, row) >= goalClearanceM(grid, robotRadiusM))
+        grid.wallDistanceM(col, row) >= robotRadiusM)
       out.push_back(p);
   }
   return out;

@@ -15,7 +15,7 @@
 //     points lie 0.5 m off the door line), so it is rarely plannable. The candidates run from
 //     the far crossing point back towards the gateway's line (the middle of the two crossing
 //     points) in steps of one grid cell, ending one cell past the line; of those the grid shows
-//     free and goalClearanceM clear of the lines, the first of at most three that the planner
+//     free and the robot radius clear of the lines, the first of at most three that the planner
 //     plans to is the goal: the robot ends on the far side (the collision avoidance stops within
 //     0.1 m of a goal; the kernel's cut leaves 0.2 to 0.3 m past a door to aim at), the traversal
 //     is reported, the kernel opens the new region.
@@ -38,6 +38,7 @@
 
 #include <Eigen/Core>
 #include <cstddef>
+#include <functional>
 #include <optional>
 #include <utility>
 #include <vector>
@@ -71,8 +72,15 @@ class Reachability {
  public:
   Reachability(const PathLength& pathLength, const Eigen::Vector2d& robot) : pathLength_(pathLength), robot_(robot) {}
   std::optional<double> lengthTo(const Eigen::Vector2d& point);
-  // The index of the candidate nearest by driving distance, and that distance.
-  std::optional<std::pair<std::size_t, double>> nearest(const std::vector<Eigen::Vector2d>& points);
+  struct Nearest {
+    std::size_t index = 0;
+    Eigen::Vector2d goal = Eigen::Vector2d::Zero();
+    double lengthM = 0.0;
+  };
+  // The candidate nearest by driving distance: candidates ranked by the straight line to `points`,
+  // candidate i planned to goalOf(i) (to points[i] without it; none: not reachable).
+  std::optional<Nearest> nearest(const std::vector<Eigen::Vector2d>& points,
+                                 const std::function<std::optional<Eigen::Vector2d>(std::size_t)>& goalOf = nullptr);
 
  private:
   bool startPlannable();
@@ -83,8 +91,9 @@ class Reachability {
   std::vector<std::pair<Eigen::Vector2d, std::optional<double>>> asked_;
 };
 
-// The gateway's drive point candidates that the grid shows free and clear of the lines, farthest
-// beyond the line first (see above); none planned.
+// The gateway's drive point candidates that the grid shows free and the robot radius clear of the
+// lines (the planner decides on the ones this leaves: at a narrow door they lie close to its
+// jambs), farthest beyond the line first (see above); none planned.
 std::vector<Eigen::Vector2d> drivePointCandidates(const OpenGateway& gateway, const ExplorationGrid& grid,
                                                   double robotRadiusM);
 // The gateway's drive point: the first of its first few candidates that the planner plans to.

@@ -22,9 +22,9 @@ ExplorationGoal NearestFrontierExploration::next(const ExplorationInput& input, 
   Reachability reach(pathLength, robot);
   std::vector<Eigen::Vector2d> points;
   for (const Frontier& f : frontiers) points.push_back(f.viewpoint);
-  std::vector<GatewayId> gateways;
-  // A gateway's candidate farthest beyond its line stands for it (planned only if it is among the
-  // nearest, so that many open gateways do not cost a plan each).
+  // A gateway ranks by its candidate farthest beyond its line, and its drive point is planned only
+  // if it is among the nearest, so that many open gateways do not cost plans each.
+  std::vector<const OpenGateway*> gateways;
   for (const OpenGateway& g : now.open) {
     const std::vector<Eigen::Vector2d> candidates = drivePointCandidates(g, now.grid, config_.robotRadiusM);
     if (candidates.empty() || failuresAt(frontierFailures_, candidates.front()) >= config_.maxGoalFailures) continue;
@@ -33,21 +33,24 @@ ExplorationGoal NearestFrontierExploration::next(const ExplorationInput& input, 
       continue;
     }
     points.push_back(candidates.front());
-    gateways.push_back(g.id);
+    gateways.push_back(&g);
   }
-  const auto best = reach.nearest(points);
+  const auto best = reach.nearest(points, [&](std::size_t i) -> std::optional<Eigen::Vector2d> {
+    if (i < frontiers.size()) return points[i];
+    return drivePoint(*gateways[i - frontiers.size()], now.grid, config_.robotRadiusM, reach);
+  });
   if (!best) return {ExplorationGoal::Kind::Done, robot, RegionId{}, GatewayId{}, "no reachable frontier left"};
   std::ostringstream reason;
   reason.precision(3);
-  if (best->first < frontiers.size()) {
-    const Frontier& f = frontiers[best->first];
-    reason << "nearest frontier: region " << f.region << " (" << f.lengthM() << " m), viewpoint " << best->second
+  if (best->index < frontiers.size()) {
+    const Frontier& f = frontiers[best->index];
+    reason << "nearest frontier: region " << f.region << " (" << f.lengthM() << " m), viewpoint " << best->lengthM
            << " m away";
     return {ExplorationGoal::Kind::Frontier, f.viewpoint, f.region, GatewayId{}, reason.str()};
   }
-  const GatewayId id = gateways[best->first - frontiers.size()];
-  reason << "nearest frontier: beyond untraversed gateway " << id << ", " << best->second << " m away";
-  return {ExplorationGoal::Kind::Gateway, points[best->first], RegionId{}, id, reason.str()};
+  const GatewayId id = gateways[best->index - frontiers.size()]->id;
+  reason << "nearest frontier: beyond untraversed gateway " << id << ", " << best->lengthM << " m away";
+  return {ExplorationGoal::Kind::Gateway, best->goal, RegionId{}, id, reason.str()};
 }
 
 void NearestFrontierExploration::failed(const ExplorationGoal& goal) { countFailure(frontierFailures_, goal.point); }

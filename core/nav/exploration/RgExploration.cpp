@@ -50,7 +50,7 @@ std::optional<ExplorationGoal> nearestFrontier(const std::vector<Frontier>& fron
   for (const Frontier& f : frontiers) points.push_back(f.viewpoint);
   const auto best = reach.nearest(points);
   if (!best) return std::nullopt;
-  return frontierGoal(frontiers[best->first], best->second, why);
+  return frontierGoal(frontiers[best->index], best->lengthM, why);
 }
 
 }  // namespace
