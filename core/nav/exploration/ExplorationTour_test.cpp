@@ -106,26 +106,21 @@ class ExplorationTourTest : public CppUnit::TestFixture {
   CPPUNIT_TEST_SUITE_END();
 
  public:
+  void rgExplorationPassesBothDoorsAndFinishes() { exploresToTheEnd("rg"); }
+  void nearestFrontierPassesBothDoorsAndFinishes() { exploresToTheEnd("frontier"); }
+
+ private:
   // Doors detected late: the hallway's freespace reaches into the rooms through them, and a
   // frontier there leads the robot in. Detected early: the kernel cuts the freespace at the
   // doors, and the robot must drive through them as gateways.
-  void rgExplorationPassesBothDoorsAndFinishes() {
-    check(explore("rg", 1.5));
-    const Outcome early = explore("rg", 3.0);
+  static void exploresToTheEnd(const std::string& strategy) {
+    check(explore(strategy, 1.5));
+    const Outcome early = explore(strategy, 3.0);
     check(early);
     CPPUNIT_ASSERT(early.gatewayGoals >= 1);
-    check(explore("rg", 3.0, hallwayWithFourRooms()), 5);
+    check(explore(strategy, 3.0, hallwayWithFourRooms()), 5);
   }
 
-  void nearestFrontierPassesBothDoorsAndFinishes() {
-    check(explore("frontier", 1.5));
-    const Outcome early = explore("frontier", 3.0);
-    check(early);
-    CPPUNIT_ASSERT(early.gatewayGoals >= 1);
-    check(explore("frontier", 3.0, hallwayWithFourRooms()), 5);
-  }
-
- private:
   static void check(const Outcome& out, std::size_t regions = 3) {
     CPPUNIT_ASSERT(out.done);
     CPPUNIT_ASSERT_EQUAL(regions, out.regions);
