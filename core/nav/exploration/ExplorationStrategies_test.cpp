@@ -76,6 +76,7 @@ class ExplorationStrategiesTest : public CppUnit::TestFixture {
   CPPUNIT_TEST(rgDrivesThroughAnUntraversedDoorToAPlannablePoint);
   CPPUNIT_TEST(rgCompletesARoomItsHallwaySawInto);
   CPPUNIT_TEST(rgTakesGatewaysFirstInFirstOutAcrossRegions);
+  CPPUNIT_TEST(rgCompletesTheRegionEnteredLastAfterSteppingBack);
   CPPUNIT_TEST(rgDropsAGatewayFailedTooOften);
   CPPUNIT_TEST(rgIsDoneWhenNothingIsLeft);
   CPPUNIT_TEST(nearestFrontierIsNearestByDrivingDistance);
@@ -158,6 +159,22 @@ class ExplorationStrategiesTest : public CppUnit::TestFixture {
     CPPUNIT_ASSERT(third.gateway == GatewayId{4});
     CPPUNIT_ASSERT(third.point.x() < 0.0);  // past door 4, on its unknown side
     CPPUNIT_ASSERT(rg.queue() == std::deque<GatewayId>({GatewayId{4}}));
+  }
+
+  void rgCompletesTheRegionEnteredLastAfterSteppingBack() {
+    rgnav::RgExploration rg({});
+    const Pose2D inR1{1.0, 2.0, 0.0};
+    auto map = planningMap({room(kR1, 0.0, true, true)},
+                           {doorAt(GatewayId{1}, 4.0, kR1, kNone), doorAt(GatewayId{2}, 0.0, kNone, kR1)});
+    CPPUNIT_ASSERT(rg.next({map, inR1, kR1}, straightLine({1.0, 2.0})).gateway == GatewayId{1});
+    // Door 1 traversed into room 2, whose top wall has a gap; the robot, sent on before the
+    // kernel knew, stepped back into region 1, which the kernel now calls current.
+    map = planningMap({room(kR1, 0.0, true, true), room(kR2, 4.0, true, false, true)},
+                      {doorAt(GatewayId{1}, 4.0, kR1, kR2), doorAt(GatewayId{2}, 0.0, kNone, kR1)});
+    const ExplorationGoal goal = rg.next({map, {3.5, 2.0, 0.0}, kR1}, straightLine({3.5, 2.0}));
+    CPPUNIT_ASSERT(goal.kind == Kind::Frontier);
+    CPPUNIT_ASSERT(goal.region == kR2);
+    CPPUNIT_ASSERT(rg.queue() == std::deque<GatewayId>({GatewayId{2}}));
   }
 
   void rgDropsAGatewayFailedTooOften() {

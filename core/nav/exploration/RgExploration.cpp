@@ -10,6 +10,7 @@
 #include "core/nav/exploration/RgExploration.h"
 
 #include <algorithm>
+#include <limits>
 #include <sstream>
 
 #include "core/lines/ScanPoints.h"
@@ -43,6 +44,17 @@ bool ofRegion(const Frontier& f, const RegionView& region) {
          region.freespace.isFreeAt(transformPoint(inverse(region.summary.frame), f.viewpoint));
 }
 
+// The region on the side of a traversed gateway that was unknown when it was driven to: the side
+// that is not `from`, or (both were unknown) the side whose crossing point lies nearer `far`.
+RegionId regionBeyond(const GatewayView& g, RegionId from, const Eigen::Vector2d& far) {
+  if (!from.isNone()) return g.sideA == from ? g.sideB : g.sideA;
+  const auto distance = [&](std::size_t side) {
+    const std::size_t c = g.sideCrossings[side];
+    return c < g.crossingPoints.size() ? (g.crossingPoints[c] - far).norm() : std::numeric_limits<double>::infinity();
+  };
+  return distance(0) <= distance(1) ? g.sideA : g.sideB;
+}
+
 // The reachable frontier nearest by driving distance, if any.
 std::optional<ExplorationGoal> nearestFrontier(const std::vector<Frontier>& frontiers, Reachability& reach,
                                                const std::string& why) {
@@ -70,19 +82,31 @@ ExplorationGoal RgExploration::next(const ExplorationInput& input, const PathLen
   for (const OpenGateway& g : open)
     if (seen_.insert(g.id).second) queue_.push_back(g.id);
 
+  // The gateway last driven to, once traversed, names the region to complete.
+  if (entering_ && std::none_of(open.begin(), open.end(), [&](const OpenGateway& g) { return g.id == *entering_; })) {
+    for (const GatewayView& g : input.map.gateways)
+      if (g.id == *entering_ && !g.neutralised) completing_ = regionBeyond(g, enteringFrom_, enteringFar_);
+    entering_.reset();
+  }
+
   Reachability reach(pathLength, robot);
 
-  // 1. The current region's frontiers.
-  std::vector<Frontier> here;
-  const auto current = std::find_if(input.map.regions.begin(), input.map.regions.end(),
-                                    [&](const RegionView& r) { return r.summary.id == input.currentRegion; });
-  if (current != input.map.regions.end())
+  // 1. The current region's frontiers, then those of the region entered last.
+  for (const RegionId region : {input.currentRegion, completing_}) {
+    const auto view = std::find_if(input.map.regions.begin(), input.map.regions.end(),
+                                   [&](const RegionView& r) { return r.summary.id == region; });
+    if (region.isNone() || view == input.map.regions.end()) continue;
+    std::vector<Frontier> own;
     for (const Frontier& f : frontiers)
-      if (ofRegion(f, *current)) {
-        here.push_back(f);
-        here.back().region = current->summary.id;
+      if (ofRegion(f, *view)) {
+        own.push_back(f);
+        own.back().region = region;
       }
-  if (auto goal = nearestFrontier(here, reach, "completing the current region")) return *goal;
+    const std::string why = region == input.currentRegion ? "completing the current region"
+                                                          : "completing the region entered last";
+    if (auto goal = nearestFrontier(own, reach, why)) return *goal;
+  }
+  completing_ = RegionId{};
 
   // 2. The oldest open gateway that can be driven through; one that cannot leaves the queue. One
   // whose drive point the robot stands at was not reported traversed: counted as a failure (the
@@ -98,6 +122,9 @@ ExplorationGoal RgExploration::next(const ExplorationInput& input, const PathLen
       }
       continue;
     }
+    entering_ = *it;
+    enteringFrom_ = g->known;
+    enteringFar_ = g->far;
     std::ostringstream reason;
     reason << "no reachable frontier left in region " << input.currentRegion << ": through untraversed gateway " << *it;
     if (!g->known.isNone()) reason << " of region " << g->known;
