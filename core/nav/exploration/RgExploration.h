@@ -10,10 +10,9 @@
 // cannot reach, or that is traversed meanwhile (both sides known), leaves the queue. The region
 // entered through the gateway last driven to is completed next even when the kernel's current
 // region is another (its traversal reached the kernel late, and the robot, sent on meanwhile,
-// stepped back through the door). When the
-// queue is empty the frontiers of every region are taken, nearest first (a region left before it
-// was complete, say because a door was closed). Done when no reachable frontier and no gateway is
-// left.
+// stepped back through the door). When the queue is empty the frontiers of every region are
+// taken, nearest first (a region left before it was complete, say because a door was closed).
+// Done when no reachable frontier and no gateway is left.
 #pragma once
 
 #include <deque>
