@@ -125,7 +125,8 @@ class ExplorationStrategiesTest : public CppUnit::TestFixture {
     // door 2 (open, in region 1's left wall).
     const std::vector<Segment2> walls{{{0, 0}, {4, 0}}, {{0, 4}, {4, 4}}, {{0, 0}, {0, 1.6}},
                                       {{0, 2.4}, {0, 4}}, {{4, 0}, {4, 1.6}}, {{4, 2.4}, {4, 4}}};
-    const RegionView r1 = exploredRegion(kR1, {}, walls, {{{-0.3, 0.6}, {0.0, 3.4}}, {{0.0, 0.0}, {4.0, 4.0}}, {{4.0, 0.0}, {7.5, 4.3}}});
+    const RegionView r1 =
+        exploredRegion(kR1, {}, walls, {{{-0.3, 0.6}, {0.0, 3.4}}, {{0.0, 0.0}, {4.0, 4.0}}, {{4.0, 0.0}, {7.5, 4.3}}});
     const auto map = planningMap({r1, room(kR2, 4.0, true, false, true)},
                                  {doorAt(GatewayId{1}, 4.0, kR1, kR2), doorAt(GatewayId{2}, 0.0, kNone, kR1)});
     rgnav::RgExploration rg({});

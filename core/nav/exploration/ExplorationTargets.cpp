@@ -70,7 +70,8 @@ bool pastGateway(const OpenGateway& g, const Eigen::Vector2d& point, double cell
 
 bool atOpenGateway(const Frontier& f, const std::vector<OpenGateway>& gateways) {
   return std::any_of(gateways.begin(), gateways.end(), [&](const OpenGateway& g) {
-    const auto past = std::count_if(f.cells.begin(), f.cells.end(), [&](const Eigen::Vector2d& c) { return pastGateway(g, c, f.cellSizeM); });
+    const auto past = std::count_if(f.cells.begin(), f.cells.end(),
+                                    [&](const Eigen::Vector2d& c) { return pastGateway(g, c, f.cellSizeM); });
     return 2 * static_cast<std::size_t>(past) >= f.cells.size();
   });
 }
