@@ -1,9 +1,11 @@
 // Tests the two exploration strategies on small RG maps (ExplorationRooms.h). RG exploration:
 // the current region's frontier before any gateway; then an untraversed door, driven through to a
 // point past its line that the route planner plans to, not to the frontier the kernel's door cut
-// leaves there; the gateway queue first-in first-out across regions, a traversed gateway leaving
-// it; Done when nothing is left. Nearest frontier: the nearest by driving distance, not by
-// straight line; an unreachable frontier and one failed maxGoalFailures times are skipped.
+// leaves there; gateways breadth first, region by region in the order their regions found them,
+// the nearest of one region's first, a traversed gateway leaving the queue; the region entered
+// last completed after the robot stepped back out of it; Done when nothing is left. Nearest
+// frontier: the nearest by driving distance, not by straight line; an unreachable frontier and one
+// failed maxGoalFailures times are skipped.
 #include <cppunit/extensions/HelperMacros.h>
 
 #include "core/common/Errors.h"
@@ -75,8 +77,9 @@ class ExplorationStrategiesTest : public CppUnit::TestFixture {
   CPPUNIT_TEST(rgCompletesTheCurrentRegionBeforeAnyGateway);
   CPPUNIT_TEST(rgDrivesThroughAnUntraversedDoorToAPlannablePoint);
   CPPUNIT_TEST(rgCompletesARoomItsHallwaySawInto);
-  CPPUNIT_TEST(rgTakesGatewaysFirstInFirstOutAcrossRegions);
+  CPPUNIT_TEST(rgTakesGatewaysRegionByRegion);
   CPPUNIT_TEST(rgCompletesTheRegionEnteredLastAfterSteppingBack);
+  CPPUNIT_TEST(rgTakesTheNearestGatewayOfARegionFirst);
   CPPUNIT_TEST(rgDropsAGatewayFailedTooOften);
   CPPUNIT_TEST(rgIsDoneWhenNothingIsLeft);
   CPPUNIT_TEST(nearestFrontierIsNearestByDrivingDistance);
@@ -137,15 +140,16 @@ class ExplorationStrategiesTest : public CppUnit::TestFixture {
     CPPUNIT_ASSERT(goal.point.y() > 3.3 && goal.point.y() < 3.9);
   }
 
-  void rgTakesGatewaysFirstInFirstOutAcrossRegions() {
-    // Regions 1 and 2 joined by door 1; door 5 leads on from region 2, seen first.
+  void rgTakesGatewaysRegionByRegion() {
+    // Regions 1 and 2 joined by door 1; door 5 leads on from region 2, seen from there first.
     const auto r1 = room(kR1, 0.0, false, true), r2 = room(kR2, 4.0, true, true);
     const auto d1 = doorAt(GatewayId{1}, 4.0, kR1, kR2);
     rgnav::RgExploration rg({});
     const Pose2D inR1{1.0, 2.0, 0.0};
     auto map = planningMap({r1, r2}, {d1, doorAt(GatewayId{5}, 8.0, kR2, kNone)});
-    CPPUNIT_ASSERT(rg.next({map, inR1, kR1}, straightLine({1.0, 2.0})).gateway == GatewayId{5});
-    // Door 4 in region 1's left wall, seen later, nearer, with a lower ID: queued behind door 5.
+    CPPUNIT_ASSERT(rg.next({map, {6.0, 2.0, 0.0}, kR2}, straightLine({6.0, 2.0})).gateway == GatewayId{5});
+    // Door 4 in region 1's left wall, seen later from region 1, nearer, with a lower ID: region 2's
+    // gateways come first.
     const RegionView r1WithDoor = room(kR1, 0.0, true, true);
     map = planningMap({r1WithDoor, r2}, {d1, doorAt(GatewayId{4}, 0.0, kNone, kR1), doorAt(GatewayId{5}, 8.0, kR2, kNone)});
     const ExplorationGoal second = rg.next({map, inR1, kR1}, straightLine({1.0, 2.0}));
@@ -164,10 +168,9 @@ class ExplorationStrategiesTest : public CppUnit::TestFixture {
 
   void rgCompletesTheRegionEnteredLastAfterSteppingBack() {
     rgnav::RgExploration rg({});
-    const Pose2D inR1{1.0, 2.0, 0.0};
     auto map = planningMap({room(kR1, 0.0, true, true)},
                            {doorAt(GatewayId{1}, 4.0, kR1, kNone), doorAt(GatewayId{2}, 0.0, kNone, kR1)});
-    CPPUNIT_ASSERT(rg.next({map, inR1, kR1}, straightLine({1.0, 2.0})).gateway == GatewayId{1});
+    CPPUNIT_ASSERT(rg.next({map, {3.0, 2.0, 0.0}, kR1}, straightLine({3.0, 2.0})).gateway == GatewayId{1});
     // Door 1 traversed into room 2, whose top wall has a gap; the robot, sent on before the
     // kernel knew, stepped back into region 1, which the kernel now calls current.
     map = planningMap({room(kR1, 0.0, true, true), room(kR2, 4.0, true, false, true)},
@@ -176,6 +179,17 @@ class ExplorationStrategiesTest : public CppUnit::TestFixture {
     CPPUNIT_ASSERT(goal.kind == Kind::Frontier);
     CPPUNIT_ASSERT(goal.region == kR2);
     CPPUNIT_ASSERT(rg.queue() == std::deque<GatewayId>({GatewayId{2}}));
+  }
+
+  void rgTakesTheNearestGatewayOfARegionFirst() {
+    // Doors 1 (left) and 2 (right) both found from region 1: the nearer one first, whatever the
+    // order they were seen in.
+    const auto map = planningMap({room(kR1, 0.0, true, true)},
+                                 {doorAt(GatewayId{1}, 0.0, kNone, kR1), doorAt(GatewayId{2}, 4.0, kR1, kNone)});
+    rgnav::RgExploration rg({});
+    const ExplorationGoal goal = rg.next({map, {3.0, 2.0, 0.0}, kR1}, straightLine({3.0, 2.0}));
+    CPPUNIT_ASSERT(goal.gateway == GatewayId{2});
+    CPPUNIT_ASSERT(rg.queue() == std::deque<GatewayId>({GatewayId{1}, GatewayId{2}}));
   }
 
   void rgDropsAGatewayFailedTooOften() {
