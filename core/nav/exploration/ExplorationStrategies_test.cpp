@@ -3,10 +3,12 @@
 // point past its line that the route planner plans to, not to the frontier the kernel's door cut
 // leaves there; gateways breadth first, region by region in the order their regions found them,
 // the nearest of one region's first, a traversed gateway leaving the queue; the region entered
-// last completed after the robot stepped back out of it; Done when nothing is left. Nearest
-// frontier: the nearest by driving distance, not by straight line; an unreachable frontier and one
-// failed maxGoalFailures times are skipped.
+// last completed after the robot stepped back out of it; a door not seen through yet kept and
+// looked through; Done when nothing is left. Nearest frontier: the nearest by driving distance, not
+// by straight line; an unreachable frontier and one failed maxGoalFailures times are skipped.
 #include <cppunit/extensions/HelperMacros.h>
+
+#include <cmath>
 
 #include "core/common/Errors.h"
 #include "core/nav/exploration/NearestFrontierExploration.h"
@@ -80,6 +82,7 @@ class ExplorationStrategiesTest : public CppUnit::TestFixture {
   CPPUNIT_TEST(rgTakesGatewaysRegionByRegion);
   CPPUNIT_TEST(rgCompletesTheRegionEnteredLastAfterSteppingBack);
   CPPUNIT_TEST(rgTakesTheNearestGatewayOfARegionFirst);
+  CPPUNIT_TEST(aDoorNotSeenThroughYetLeadsTheRobotToLook);
   CPPUNIT_TEST(rgDropsAGatewayFailedTooOften);
   CPPUNIT_TEST(rgIsDoneWhenNothingIsLeft);
   CPPUNIT_TEST(nearestFrontierIsNearestByDrivingDistance);
@@ -190,6 +193,20 @@ class ExplorationStrategiesTest : public CppUnit::TestFixture {
     const ExplorationGoal goal = rg.next({map, {3.0, 2.0, 0.0}, kR1}, straightLine({3.0, 2.0}));
     CPPUNIT_ASSERT(goal.gateway == GatewayId{2});
     CPPUNIT_ASSERT(rg.queue() == std::deque<GatewayId>({GatewayId{1}, GatewayId{2}}));
+  }
+
+  void aDoorNotSeenThroughYetLeadsTheRobotToLook() {
+    // A 1.2 m door seen at a slant: region 1's freespace stops at its line, so no point past it
+    // can be planned yet. The gateway waits in the queue, and its frontier is a goal.
+    const std::vector<Segment2> walls{{{0, 0}, {4, 0}}, {{0, 4}, {4, 4}}, {{0, 0}, {0, 4}},
+                                      {{4, 0}, {4, 1.4}}, {{4, 2.6}, {4, 4}}};
+    const auto map = planningMap({exploredRegion(kR1, {}, walls, {{{0.0, 0.0}, {4.0, 4.0}}})},
+                                 {door(GatewayId{1}, {4.0, 1.4}, {4.0, 2.6}, kR1, kNone)});
+    rgnav::RgExploration rg({});
+    const ExplorationGoal goal = rg.next({map, {1.0, 2.0, 0.0}, kR1}, straightLine({1.0, 2.0}));
+    CPPUNIT_ASSERT(goal.kind == Kind::Frontier);
+    CPPUNIT_ASSERT(goal.point.x() > 3.0 && std::abs(goal.point.y() - 2.0) < 0.3);
+    CPPUNIT_ASSERT_EQUAL(std::size_t(1), rg.queue().size());
   }
 
   void rgDropsAGatewayFailedTooOften() {

@@ -113,7 +113,8 @@ ExplorationGoal RgExploration::next(const ExplorationInput& input, const PathLen
   completing_ = RegionId{};
 
   // 2. Breadth first: the gateways found from the region whose gateways were found first, the
-  // nearest of them by driving distance. One that cannot be driven through leaves the queue. One
+  // nearest of them by driving distance. One that cannot be driven through leaves the queue; one
+  // with no drive point candidate yet waits in it (ExplorationTargets.h). One
   // whose drive point the robot stands at was not reported traversed: counted as a failure (the
   // kernel may lag, so it stays queued until it failed maxGoalFailures times) and passed over.
   std::vector<RegionId> levels;
@@ -126,16 +127,12 @@ ExplorationGoal RgExploration::next(const ExplorationInput& input, const PathLen
     for (const GatewayId id : queue_) {
       if (foundIn_[id] != level) continue;
       const OpenGateway& g = *std::find_if(open.begin(), open.end(), [&](const OpenGateway& o) { return o.id == id; });
-      const std::vector<Eigen::Vector2d> candidates = drivePointCandidates(g, now.grid, config_.robotRadiusM);
-      if (candidates.empty()) {
-        dropped.push_back(id);
-        continue;
-      }
+      if (g.drivePoints.empty()) continue;  // no target yet; its frontier leads the robot to look
       group.push_back(&g);
-      points.push_back(candidates.front());
+      points.push_back(g.drivePoints.front());
     }
     const auto best = reach.nearest(points, [&](std::size_t i) -> std::optional<Eigen::Vector2d> {
-      const auto point = drivePoint(*group[i], now.grid, config_.robotRadiusM, reach);
+      const auto point = drivePoint(*group[i], reach);
       if (!point) {
         dropped.push_back(group[i]->id);
       } else if ((*point - robot).norm() <= kSameGoalM) {

@@ -10,7 +10,8 @@
 // graph visits the nearer regions first; among one region's, the nearest by driving distance
 // first (breadth first leaves the order of siblings open; nearest first saves the drive back
 // along a hallway to its first door). A gateway the robot cannot reach, or that is traversed
-// meanwhile (both sides known), leaves the queue. The region entered through the gateway last
+// meanwhile (both sides known), leaves the queue; one it has not seen through yet (no floor past
+// its line to drive to) waits, and its frontier is the region's. The region entered through the gateway last
 // driven to is completed next even when the kernel's current region is another (its traversal
 // reached the kernel late, and the robot, sent on meanwhile, stepped back through the door). When
 // the queue is empty the frontiers of every region are taken, nearest first (a region left before
