@@ -7,16 +7,19 @@
 // chain: the module is SIGKILLed while the task is active, and the restarted module carries the
 // task on with the same drive request ID until it ends reached. The naming dialog asks about the
 // kernel's current region, which has no name; the answer names that region in the kernel and
-// ends the question. rgnav-nav lists the task as reached.
+// ends the question. rgnav-nav lists the task as reached. Only the test reads the ground truth, to
+// check that the robot stands at the goal.
 #include <cppunit/extensions/HelperMacros.h>
 
 #include <signal.h>
 #include <sys/wait.h>
 
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
 
+#include "clientlibs/groundtruth/GroundTruthClient.h"
 #include "clientlibs/highlevelplanning/HighLevelPlanningClient.h"
 #include "clientlibs/rgmappingkernel/RgMappingKernelClient.h"
 #include "core/common/AtomicFile.h"
@@ -132,12 +135,19 @@ class HighLevelPlanningIntegrationTest : public CppUnit::TestFixture {
       done = planning.task(1);
       return ended(done.state);
     }, "the task to end", std::chrono::seconds(45), std::chrono::milliseconds(100));
-    std::printf("\ntask 1 %s %s after %u drive(s), drive request %llu kept over the restart\n",
+    // The test (not a module) checks where the robot truly stands.
+    LaserClient laser(cluster.clientSettings());
+    GroundTruthClient truth(cluster.clientSettings());
+    const Pose2D end = truth.truePose(laser.latestId());
+    const double missM = std::hypot(end.x - 6.0, end.y - 1.0);
+    std::printf("\ntask 1 %s %s after %u drive(s), drive request %llu kept over the restart; true pose %.2f %.2f "
+                "(%.2f m from the goal)\n",
                 toString(done.state).c_str(), done.reason.c_str(), done.drives,
-                static_cast<unsigned long long>(done.drive));
+                static_cast<unsigned long long>(done.drive), end.x, end.y, missM);
     CPPUNIT_ASSERT_EQUAL(std::string("reached"), toString(done.state));
     CPPUNIT_ASSERT_EQUAL(driving.drive, done.drive);
     CPPUNIT_ASSERT_EQUAL(std::uint32_t{1}, done.drives);
+    CPPUNIT_ASSERT(missM <= 0.5);
 
     // The naming dialog: a question about the kernel's current region, answered by name.
     const RegionId current = kernel.summary().current;
