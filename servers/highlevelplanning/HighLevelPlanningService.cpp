@@ -51,24 +51,23 @@ HighLevelPlanningService::HighLevelPlanningService(const HighLevelPlanningConfig
 
 // ---- servant side ----------------------------------------------------------------------------
 
-Task HighLevelPlanningService::goTo(std::uint64_t request, const PlanGoal& goal) {
+template <class Add>
+Task HighLevelPlanningService::queue(std::uint64_t request, Add&& add) {
   if (request == 0) throw InvalidArgumentError("request ID 0");
   std::lock_guard lock(mutex_);
   const TaskId next = state_.queue.nextId();
-  const Task task = state_.queue.goTo(goal, request);
+  const Task task = add();
   if (task.id == next) health_.add("tasks");
   checkpoint();
   return task;
 }
 
+Task HighLevelPlanningService::goTo(std::uint64_t request, const PlanGoal& goal) {
+  return queue(request, [&] { return state_.queue.goTo(goal, request); });
+}
+
 Task HighLevelPlanningService::explore(std::uint64_t request) {
-  if (request == 0) throw InvalidArgumentError("request ID 0");
-  std::lock_guard lock(mutex_);
-  const TaskId next = state_.queue.nextId();
-  const Task task = state_.queue.explore(request);
-  if (task.id == next) health_.add("tasks");
-  checkpoint();
-  return task;
+  return queue(request, [&] { return state_.queue.explore(request); });
 }
 
 Task HighLevelPlanningService::stopAll(std::uint64_t request) {

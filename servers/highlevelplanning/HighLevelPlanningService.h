@@ -81,6 +81,9 @@ class HighLevelPlanningService {
   TaskId nextTaskId();
 
  private:
+  // A task added by `add` (under lock) for `request`; counted and checkpointed if new.
+  template <class Add>
+  Task queue(std::uint64_t request, Add&& add);
   bool step();
   void pollKernel();
   std::optional<Pose2D> robotPose();  // fetched only where needed: the source may be away

@@ -1,9 +1,8 @@
 // The High-Level Planning module in a small real set: the simulator in real time on the two-room
 // world (tests/worlds/hallway_two_rooms.yaml) with noiseless odometry (so the odometry frame, the
 // Collision Avoidance's map frame with pose source "odometry", is the world frame), the Low-Level
-// Drive, the RG Mapping Kernel holding the map of that world (twoRoomMap(), loaded from a
-// checkpoint), the PathPlanning and Collision Avoidance modules, and the High-Level Planning
-// module. No module reads the ground truth. A goTo task along the hallway is driven through the
+// Drive, the RG Mapping Kernel holding the map of that world (PlanningSet.h), the PathPlanning and
+// Collision Avoidance modules, and the High-Level Planning module. No module reads the ground truth. A goTo task along the hallway is driven through the
 // chain: the module is SIGKILLed while the task is active, and the restarted module carries the
 // task on with the same drive request ID until it ends reached. The naming dialog asks about the
 // kernel's current region, which has no name; the answer names that region in the kernel and
@@ -12,7 +11,6 @@
 #include <cppunit/extensions/HelperMacros.h>
 
 #include <signal.h>
-#include <sys/wait.h>
 
 #include <cmath>
 #include <cstdio>
@@ -22,12 +20,9 @@
 #include "clientlibs/groundtruth/GroundTruthClient.h"
 #include "clientlibs/highlevelplanning/HighLevelPlanningClient.h"
 #include "clientlibs/rgmappingkernel/RgMappingKernelClient.h"
-#include "core/common/AtomicFile.h"
-#include "core/rgmap/export/testing/ExportedFloor.h"
-#include "core/rgmap/kernel/RgMapCodec.h"
 #include "tests/integration/IntegrationHelpers.h"
-#include "tests/support/WaitUntil.h"
-#include "watchdog/Spawn.h"
+#include "tests/integration/PlanningSet.h"
+#include "tests/integration/ToolRun.h"
 
 using namespace rgnav;
 using namespace rgnav::testing;
@@ -38,7 +33,8 @@ const char* const kNoiselessSimulation =
     "odometry: {alpha1: 0, alpha2: 0, alpha3: 0, alpha4: 0}\n"
     "laser: {range_noise_sigma_m: 0}\n";
 
-std::vector<ClusterModule> navigationSet(const std::string& simulationConfig) {
+// Besides the kernel and the PathPlanning module of PlanningSet.h.
+std::vector<ClusterModule> motionAndTasks(const std::string& simulationConfig) {
   const std::string world = std::filesystem::absolute("tests/worlds/hallway_two_rooms.yaml").string();
   return {{"Simulator",
            {TestCluster::program("rgnav-sim"), "--world", world, "--config", simulationConfig, "--clock", "realtime",
@@ -48,13 +44,6 @@ std::vector<ClusterModule> navigationSet(const std::string& simulationConfig) {
            {TestCluster::program("rgnav-lowleveldrive"), "--config", TestCluster::moduleConfig("lowleveldrive")},
            {"LowLevelDrive"},
            {"Simulator"}},
-          {"RGMappingKernel",
-           {TestCluster::program("rgnav-rgmappingkernel"), "--config", TestCluster::moduleConfig("rgmappingkernel")},
-           {"RGMappingKernel"}},
-          {"PathPlanning",
-           {TestCluster::program("rgnav-pathplanning"), "--config", TestCluster::moduleConfig("pathplanning")},
-           {"PathPlanning"},
-           {"RGMappingKernel"}},
           {"CollisionAvoidance",
            {TestCluster::program("rgnav-collisionavoidance"), "--config",
             TestCluster::moduleConfig("collisionavoidance"), "--pose-source", "odometry"},
@@ -65,27 +54,6 @@ std::vector<ClusterModule> navigationSet(const std::string& simulationConfig) {
             TestCluster::moduleConfig("highlevelplanning"), "--pose-source", "scanmapper"},
            {"HighLevelPlanning"},
            {"RGMappingKernel", "CollisionAvoidance"}}};
-}
-
-// Runs rgnav-nav with `args` until it ends; its exit status and output (stdout and stderr).
-std::pair<int, std::string> runNavTool(const std::vector<std::string>& args, const std::string& logFile) {
-  SpawnSpec spec;
-  spec.argv = {TestCluster::program("rgnav-nav")};
-  spec.argv.insert(spec.argv.end(), args.begin(), args.end());
-  spec.logFile = logFile;
-  spec.parentDeathSignal = SIGKILL;
-  const pid_t pid = spawnProcess(spec);
-  int status = 0;
-  try {
-    waitUntil([&] { return ::waitpid(pid, &status, WNOHANG) != 0; }, "rgnav-nav to end", std::chrono::seconds(30),
-              std::chrono::milliseconds(20));
-  } catch (...) {
-    discardChild(pid);
-    throw;
-  }
-  std::ifstream log(logFile);
-  return {WIFEXITED(status) ? WEXITSTATUS(status) : -1,
-          std::string(std::istreambuf_iterator<char>(log), std::istreambuf_iterator<char>())};
 }
 
 }  // namespace
@@ -100,12 +68,8 @@ class HighLevelPlanningIntegrationTest : public CppUnit::TestFixture {
     ScratchDir scratch("rgnav-hlp-set");
     const std::string simulation = scratch.file("noiseless.yaml");
     std::ofstream(simulation) << kNoiselessSimulation;
-    TestCluster cluster(navigationSet(simulation), kFastBackoff);
-    const RgMappingKernel map = twoRoomMap();
-    const std::string kernelState = cluster.dir() + "/run/state/RGMappingKernel";
-    std::filesystem::create_directories(kernelState);
-    writeFileAtomically(kernelState + "/rgmap.state", serializeRgMap(map.state()));
-    writeFileAtomically(kernelState + "/rgmap.state.scans", scanJournalLines(map.state()));
+    PlanningSet set(kFastBackoff, motionAndTasks(simulation));
+    TestCluster& cluster = set.cluster();
     cluster.start();
     HighLevelPlanningClient planning(cluster.clientSettings());
     RgMappingKernelClient kernel(cluster.clientSettings());
@@ -169,7 +133,7 @@ class HighLevelPlanningIntegrationTest : public CppUnit::TestFixture {
                 static_cast<unsigned long long>(questions.front().id),
                 static_cast<unsigned long long>(current.value()), kernel.region(current).summary.name.c_str());
 
-    const auto [code, output] = runNavTool(
+    const auto [code, output] = runTool("rgnav-nav", 
         {"--naming", "127.0.0.1:" + std::to_string(cluster.namingPort()), "tasks"}, scratch.file("nav.log"));
     std::printf("rgnav-nav tasks: %s", output.c_str());
     CPPUNIT_ASSERT_EQUAL(0, code);

@@ -8,19 +8,25 @@
 #include "core/rgmap/kernel/RgMapCodec.h"
 
 namespace rgnav::testing {
+namespace {
 
-PlanningSet::PlanningSet(const std::string& setYaml)
-    : map_(twoRoomMap()),
-      cluster_(std::make_unique<TestCluster>(
-          std::vector<ClusterModule>{
-              {"RGMappingKernel",
-               {TestCluster::program("rgnav-rgmappingkernel"), "--config", TestCluster::moduleConfig("rgmappingkernel")},
-               {"RGMappingKernel"}},
-              {"PathPlanning",
-               {TestCluster::program("rgnav-pathplanning"), "--config", TestCluster::moduleConfig("pathplanning")},
-               {"PathPlanning"},
-               {"RGMappingKernel"}}},
-          setYaml)) {
+std::vector<ClusterModule> withPlanning(std::vector<ClusterModule> more) {
+  std::vector<ClusterModule> modules{
+      {"RGMappingKernel",
+       {TestCluster::program("rgnav-rgmappingkernel"), "--config", TestCluster::moduleConfig("rgmappingkernel")},
+       {"RGMappingKernel"}},
+      {"PathPlanning",
+       {TestCluster::program("rgnav-pathplanning"), "--config", TestCluster::moduleConfig("pathplanning")},
+       {"PathPlanning"},
+       {"RGMappingKernel"}}};
+  modules.insert(modules.end(), more.begin(), more.end());
+  return modules;
+}
+
+}  // namespace
+
+PlanningSet::PlanningSet(const std::string& setYaml, std::vector<ClusterModule> more)
+    : map_(twoRoomMap()), cluster_(std::make_unique<TestCluster>(withPlanning(std::move(more)), setYaml)) {
   const std::string dir = cluster_->dir() + "/run/state/RGMappingKernel";
   std::filesystem::create_directories(dir);
   writeFileAtomically(dir + "/rgmap.state", serializeRgMap(map_.state()));
