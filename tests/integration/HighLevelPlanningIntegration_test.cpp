@@ -1,10 +1,9 @@
 // The High-Level Planning module in a small real set: the simulator in real time on the two-room
-// world (tests/worlds/hallway_two_rooms.yaml) with noiseless odometry (so the odometry frame, the
-// Collision Avoidance's map frame with pose source "odometry", is the world frame), the Low-Level
-// Drive, the RG Mapping Kernel holding the map of that world (PlanningSet.h), the PathPlanning and
-// Collision Avoidance modules, and the High-Level Planning module. No module reads the ground truth. A goTo task along the hallway is driven through the
-// chain: the module is SIGKILLed while the task is active, and the restarted module carries the
-// task on with the same drive request ID until it ends reached. The naming dialog asks about the
+// world, the Low-Level Drive, the Collision Avoidance and the High-Level Planning module
+// (NavigationSet.h), the RG Mapping Kernel holding the map of that world and the PathPlanning
+// module (PlanningSet.h). No module reads the ground truth. A goTo task along the hallway is driven
+// through the chain: the module is SIGKILLed while the task is active, and the restarted module
+// carries the task on with the same drive request ID until it ends reached. The naming dialog asks about the
 // kernel's current region, which has no name; the answer names that region in the kernel and
 // ends the question. rgnav-nav lists the task as reached. Only the test reads the ground truth, to
 // check that the robot stands at the goal.
@@ -14,49 +13,17 @@
 
 #include <cmath>
 #include <cstdio>
-#include <filesystem>
-#include <fstream>
 
 #include "clientlibs/groundtruth/GroundTruthClient.h"
 #include "clientlibs/highlevelplanning/HighLevelPlanningClient.h"
 #include "clientlibs/rgmappingkernel/RgMappingKernelClient.h"
 #include "tests/integration/IntegrationHelpers.h"
+#include "tests/integration/NavigationSet.h"
 #include "tests/integration/PlanningSet.h"
 #include "tests/integration/ToolRun.h"
 
 using namespace rgnav;
 using namespace rgnav::testing;
-
-namespace {
-
-const char* const kNoiselessSimulation =
-    "odometry: {alpha1: 0, alpha2: 0, alpha3: 0, alpha4: 0}\n"
-    "laser: {range_noise_sigma_m: 0}\n";
-
-// Besides the kernel and the PathPlanning module of PlanningSet.h.
-std::vector<ClusterModule> motionAndTasks(const std::string& simulationConfig) {
-  const std::string world = std::filesystem::absolute("tests/worlds/hallway_two_rooms.yaml").string();
-  return {{"Simulator",
-           {TestCluster::program("rgnav-sim"), "--world", world, "--config", simulationConfig, "--clock", "realtime",
-            "--start", "1,1,0"},
-           {"Laser", "Base", "GroundTruth"}},
-          {"LowLevelDrive",
-           {TestCluster::program("rgnav-lowleveldrive"), "--config", TestCluster::moduleConfig("lowleveldrive")},
-           {"LowLevelDrive"},
-           {"Simulator"}},
-          {"CollisionAvoidance",
-           {TestCluster::program("rgnav-collisionavoidance"), "--config",
-            TestCluster::moduleConfig("collisionavoidance"), "--pose-source", "odometry"},
-           {"CollisionAvoidance"},
-           {"Simulator", "LowLevelDrive", "PathPlanning"}},
-          {"HighLevelPlanning",
-           {TestCluster::program("rgnav-highlevelplanning"), "--config",
-            TestCluster::moduleConfig("highlevelplanning"), "--pose-source", "scanmapper"},
-           {"HighLevelPlanning"},
-           {"RGMappingKernel", "CollisionAvoidance"}}};
-}
-
-}  // namespace
 
 class HighLevelPlanningIntegrationTest : public CppUnit::TestFixture {
   CPPUNIT_TEST_SUITE(HighLevelPlanningIntegrationTest);
@@ -66,9 +33,7 @@ class HighLevelPlanningIntegrationTest : public CppUnit::TestFixture {
  public:
   void drivesATaskAndAsksForNames() {
     ScratchDir scratch("rgnav-hlp-set");
-    const std::string simulation = scratch.file("noiseless.yaml");
-    std::ofstream(simulation) << kNoiselessSimulation;
-    PlanningSet set(kFastBackoff, motionAndTasks(simulation));
+    PlanningSet set(kFastBackoff, motionAndTasks(scratch.path.string()));
     TestCluster& cluster = set.cluster();
     cluster.start();
     HighLevelPlanningClient planning(cluster.clientSettings());

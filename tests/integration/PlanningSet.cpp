@@ -8,10 +8,9 @@
 #include "core/rgmap/kernel/RgMapCodec.h"
 
 namespace rgnav::testing {
-namespace {
 
-std::vector<ClusterModule> withPlanning(std::vector<ClusterModule> more) {
-  std::vector<ClusterModule> modules{
+std::vector<ClusterModule> planningModules() {
+  return {
       {"RGMappingKernel",
        {TestCluster::program("rgnav-rgmappingkernel"), "--config", TestCluster::moduleConfig("rgmappingkernel")},
        {"RGMappingKernel"}},
@@ -19,14 +18,13 @@ std::vector<ClusterModule> withPlanning(std::vector<ClusterModule> more) {
        {TestCluster::program("rgnav-pathplanning"), "--config", TestCluster::moduleConfig("pathplanning")},
        {"PathPlanning"},
        {"RGMappingKernel"}}};
-  modules.insert(modules.end(), more.begin(), more.end());
-  return modules;
 }
 
-}  // namespace
-
 PlanningSet::PlanningSet(const std::string& setYaml, std::vector<ClusterModule> more)
-    : map_(twoRoomMap()), cluster_(std::make_unique<TestCluster>(withPlanning(std::move(more)), setYaml)) {
+    : map_(twoRoomMap()) {
+  std::vector<ClusterModule> modules = planningModules();
+  modules.insert(modules.end(), more.begin(), more.end());
+  cluster_ = std::make_unique<TestCluster>(std::move(modules), setYaml);
   const std::string dir = cluster_->dir() + "/run/state/RGMappingKernel";
   std::filesystem::create_directories(dir);
   writeFileAtomically(dir + "/rgmap.state", serializeRgMap(map_.state()));

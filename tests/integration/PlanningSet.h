@@ -14,6 +14,10 @@
 
 namespace rgnav::testing {
 
+// The kernel (started without a map unless its checkpoint is placed) and the PathPlanning module,
+// as set modules.
+std::vector<ClusterModule> planningModules();
+
 class PlanningSet {
  public:
   // `setYaml`: extra top-level YAML of the set (e.g. kFastBackoff); `more`: modules besides the
