@@ -1,0 +1,114 @@
+// One exploration in lock-step; see ExplorationRun.h.
+#include "tests/eval/exploration/ExplorationRun.h"
+
+#include <cmath>
+#include <cstdio>
+
+#include "core/common/Errors.h"
+#include "core/nav/exploration/Explorer.h"
+#include "core/nav/grid/ClearanceMap.h"
+#include "core/nav/grid/PlanningErrors.h"
+
+namespace rgnav {
+namespace {
+
+DriveOutcome outcomeOf(GoalDriveState state) {
+  switch (state) {
+    case GoalDriveState::Driving: return DriveOutcome::Driving;
+    case GoalDriveState::Reached: return DriveOutcome::Reached;
+    case GoalDriveState::Failed: return DriveOutcome::Failed;
+    case GoalDriveState::Idle: break;
+  }
+  return DriveOutcome::None;
+}
+
+std::string metres(const std::optional<double>& m) {
+  if (!m) return "n/a";
+  char text[32];
+  std::snprintf(text, sizeof text, "%.1f", *m);
+  return text;
+}
+
+}  // namespace
+
+std::string explorationLine(const std::string& mapName, const ExplorationResult& result) {
+  char line[512];
+  std::snprintf(line, sizeof line, "exploration %s %s: seen_95_m=%s seen_99_m=%s rooms_found=%zu/%zu collisions=%llu time_s=%.1f",
+                mapName.c_str(), result.strategy.c_str(), metres(result.seen95M).c_str(),
+                metres(result.seen99M).c_str(), result.roomsFound, result.roomsReachable,
+                static_cast<unsigned long long>(result.collisions), result.seconds);
+  return line;
+}
+
+Pose2D startInFirstRoom(const OccupancyGrid& world, const GroundTruth& truth, double robotRadiusM) {
+  const ClearanceMap clearance(world);
+  std::optional<CellIndex> best;
+  for (int row = 0; row < world.height(); ++row)
+    for (int col = 0; col < world.width(); ++col)
+      if (truth.roomOf({col, row}) == 0 && (!best || clearance.at({col, row}) > clearance.at(*best))) best = {col, row};
+  if (!best || clearance.at(*best) < robotRadiusM + world.resolution())
+    throw InvalidArgumentError("the first ground-truth room has no cell where the robot fits");
+  const WorldPoint p = world.center(*best);
+  return {p.x, p.y, 0.0};
+}
+
+ExplorationResult runExploration(InProcessRobot& robot, TruthCoverage& coverage, const ExplorationSetup& setup) {
+  Explorer explorer(makeExplorationStrategy(setup.strategy, setup.exploration), setup.exploration);
+  ExplorationResult result;
+  result.strategy = setup.strategy;
+  const double start = robot.time();
+  bool failureCounted = false;
+  while (robot.time() - start < setup.timeLimitS) {
+    const SimulationStep step = robot.step();
+    if (!step.scan) continue;
+    coverage.addScan(*step.scan);
+    result.truePath.emplace_back(step.truePose.x, step.truePose.y);
+    const double share = coverage.seenShare();
+    if (!result.seen95M && share >= 0.95) result.seen95M = robot.pathM();
+    if (!result.seen99M && share >= 0.99) result.seen99M = robot.pathM();
+    if (!robot.mapped()) continue;  // no region yet: nothing to explore from
+    if (robot.drive().state() == GoalDriveState::Failed && !failureCounted) {
+      ++result.failedDrives;
+      failureCounted = true;
+      if (setup.trace)
+        std::printf("# %s t=%.1f drive failed: %s\n", setup.strategy.c_str(), robot.time() - start,
+                    robot.drive().reason().c_str());
+    }
+    const Pose2D pose = robot.pose();
+    const PathLength pathLength = [&](const Eigen::Vector2d& goal) -> std::optional<double> {
+      try {
+        return robot.planner().plan(pose, PlanGoal::at(goal)).lengthM;
+      } catch (const NoPathError&) {
+        return std::nullopt;
+      }
+    };
+    const ExplorationInput input{robot.planner().map(), pose, robot.kernel().state().current};
+    const ExplorerStep next = explorer.update(input, outcomeOf(robot.drive().state()), robot.time() - start, pathLength);
+    if (next.action == ExplorerStep::Action::Done) {
+      robot.cancelDrive();
+      result.done = true;
+      break;
+    }
+    if (next.action == ExplorerStep::Action::DriveTo) {
+      if (setup.trace)
+        std::printf("# %s t=%.1f path=%.1f seen=%.3f pose=(%.2f %.2f) goal %s (%.2f %.2f): %s\n",
+                    setup.strategy.c_str(), robot.time() - start, robot.pathM(), share, pose.x, pose.y,
+                    next.goal.kind == ExplorationGoal::Kind::Gateway ? "gateway" : "frontier", next.goal.point.x(),
+                    next.goal.point.y(), next.goal.reason.c_str());
+      robot.driveTo(PlanGoal::at(next.goal.point));
+      failureCounted = false;
+    }
+  }
+  result.seconds = robot.time() - start;
+  result.pathM = robot.pathM();
+  result.seenShare = coverage.seenShare();
+  result.goals = explorer.goalsGiven();
+  result.collisions = robot.simulation().robotCollisions();
+  for (const RoomCoverage& room : coverage.rooms()) {
+    result.roomsReachable += room.reachable();
+    result.roomsFound += room.found();
+  }
+  return result;
+}
+
+}  // namespace rgnav
