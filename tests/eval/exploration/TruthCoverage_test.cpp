@@ -72,14 +72,17 @@ class TruthCoverageTest : public CppUnit::TestFixture {
     const GroundTruth truth = rooms(grid);
     const TruthCoverage coverage(grid, truth, {0.5, 1.5}, 0.25, 8.0);
     CPPUNIT_ASSERT(coverage.reachable(cellAt(1.0, 1.0)));
-    CPPUNIT_ASSERT(coverage.reachable(cellAt(0.1, 0.1)));  // a corner the robot's disk covers
+    CPPUNIT_ASSERT(coverage.reachable(cellAt(0.1, 1.0)));   // along a wall: the robot's disk covers it
+    CPPUNIT_ASSERT(!coverage.reachable(cellAt(0.1, 0.1)));  // a corner it does not
     CPPUNIT_ASSERT(coverage.reachable(cellAt(3.5, 1.5)));  // through the door
     CPPUNIT_ASSERT(!coverage.reachable(cellAt(5.0, 1.5)));  // behind the slit
     CPPUNIT_ASSERT(!coverage.reachable(cellAt(3.02, 0.5)));  // the wall
     CPPUNIT_ASSERT_EQUAL(std::size_t(0), coverage.seenCells());
     const std::vector<RoomCoverage> byRoom = coverage.rooms();
     CPPUNIT_ASSERT(byRoom[0].reachable() && byRoom[1].reachable() && !byRoom[2].reachable());
-    CPPUNIT_ASSERT_EQUAL(coverage.reachableCells(), byRoom[0].reachableCells + byRoom[1].reachableCells);
+    CPPUNIT_ASSERT_EQUAL(std::size_t(0), byRoom[2].reachableCells);
+    // The door's cells belong to no room.
+    CPPUNIT_ASSERT_EQUAL(coverage.reachableCells(), byRoom[0].reachableCells + byRoom[1].reachableCells + 20);
   }
 
   void aScanSeesInFrontOfTheLaserWithinTheUsefulRange() {
