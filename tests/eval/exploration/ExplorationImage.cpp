@@ -50,7 +50,7 @@ void writeExplorationImage(const std::string& path, const OccupancyGrid& world, 
     cv::findContours(mask, outlines, cv::RETR_EXTERNAL, cv::CHAIN_APPROX_NONE);
     const cv::Vec3b colour = bgr(regionColour(RegionId(region.id)));
     const cv::Scalar darker(colour[0] * 0.6, colour[1] * 0.6, colour[2] * 0.6);
-    cv::drawContours(image, outlines, -1, darker, 2);
+    cv::drawContours(image, outlines, -1, darker, 1);
     const cv::Moments m = cv::moments(mask, true);
     if (m.m00 > 0)
       cv::putText(image, std::to_string(region.id), cv::Point(int(m.m10 / m.m00), int(m.m01 / m.m00)),

@@ -1,6 +1,7 @@
 // One exploration in lock-step; see ExplorationRun.h.
 #include "tests/eval/exploration/ExplorationRun.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 
@@ -27,6 +28,13 @@ std::string metres(const std::optional<double>& m) {
   char text[32];
   std::snprintf(text, sizeof text, "%.1f", *m);
   return text;
+}
+
+// Gateways of the map with a side whose region is not known (for the trace).
+std::size_t oneSideUnknown(const PlanningMap& map) {
+  return std::size_t(std::count_if(map.gateways.begin(), map.gateways.end(), [](const GatewayView& g) {
+    return !g.neutralised && (g.sideA.isNone() || g.sideB.isNone());
+  }));
 }
 
 }  // namespace
@@ -91,8 +99,10 @@ ExplorationResult runExploration(InProcessRobot& robot, TruthCoverage& coverage,
     }
     if (next.action == ExplorerStep::Action::DriveTo) {
       if (setup.trace)
-        std::printf("# %s t=%.1f path=%.1f seen=%.3f pose=(%.2f %.2f) goal %s (%.2f %.2f): %s\n",
-                    setup.strategy.c_str(), robot.time() - start, robot.pathM(), share, pose.x, pose.y,
+        std::printf("# %s t=%.1f path=%.1f seen=%.3f regions=%zu gateways=%zu one_side_unknown=%zu pose=(%.2f %.2f) "
+                    "goal %s (%.2f %.2f): %s\n",
+                    setup.strategy.c_str(), robot.time() - start, robot.pathM(), share, input.map.regions.size(),
+                    input.map.gateways.size(), oneSideUnknown(input.map), pose.x, pose.y,
                     next.goal.kind == ExplorationGoal::Kind::Gateway ? "gateway" : "frontier", next.goal.point.x(),
                     next.goal.point.y(), next.goal.reason.c_str());
       robot.driveTo(PlanGoal::at(next.goal.point));
