@@ -21,7 +21,8 @@ Explorer::Explorer(std::unique_ptr<ExplorationStrategy> strategy, const Explorat
 
 ExplorerStep Explorer::update(const ExplorationInput& input, DriveOutcome drive, double now, const PathLength& pathLength) {
   if (done_) return {ExplorerStep::Action::Done, {}};
-  const bool driving = goal_ && drive != DriveOutcome::Reached && drive != DriveOutcome::Failed;
+  if (input.map.regions.empty()) return {ExplorerStep::Action::Keep, goal_.value_or(ExplorationGoal{})};
+  const bool driving = goal_ && drive == DriveOutcome::Driving;
   if (driving && now - lastCheck_ < config_.regoalPeriodS) return {ExplorerStep::Action::Keep, *goal_};
   if (goal_ && drive == DriveOutcome::Failed) strategy_->failed(*goal_);
   lastCheck_ = now;

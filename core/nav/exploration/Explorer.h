@@ -2,13 +2,16 @@
 // Level Planning module through PathPlanning → CollisionAvoidance → LowLevelDrive; the exploration
 // evaluation in process). On every call it gets the newest map, the robot's pose and how the drive
 // to its last goal stands, and answers: keep driving, drive to a new goal, or done.
-//   - No goal yet, goal reached, goal failed (counted with the strategy): the strategy's next goal.
+//   - No goal yet, goal reached, goal failed (counted with the strategy), no drive to the goal
+//     (None after a DriveTo: the caller lost it): the strategy's next goal.
 //   - While driving, every regoalPeriodS (simulated or wall seconds, the caller's clock): the
 //     strategy is asked again on the newest map; a different goal replaces the current one (its
 //     frontier was seen meanwhile, or a nearer one appeared). A goal is not replaced by an equal
 //     one (same kind, gateway, and point within 2 grid cells), so a drive is not restarted for
 //     nothing.
 //   - Done: once the strategy says so.
+//   - A map without regions (the kernel has not made its first region yet): Keep, the strategy is
+//     not asked (it would find nothing to explore and say Done).
 #pragma once
 
 #include <memory>

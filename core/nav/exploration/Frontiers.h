@@ -23,18 +23,22 @@ struct Frontier {
 };
 
 // How far from every line (ExplorationGrid::wallDistanceM) a goal cell keeps: the robot radius, by
-// which the route planner inflates walls, plus the distance transform's error (half a cell's
-// diagonal), rounded up.
+// which the route planner inflates walls, plus this grid's error (half a cell's diagonal, rounded
+// up) and the planner's own (RegionGrid.h: the goal's 5 cm cell and the lines' cells each up to
+// half a cell's diagonal off), so that the planner accepts the goal.
+inline constexpr double kPlannerGridSlackM = 0.075;
 inline double goalClearanceM(const ExplorationGrid& grid, double robotRadiusM) {
-  return robotRadiusM + 0.75 * grid.resolutionM();
+  return robotRadiusM + 0.75 * grid.resolutionM() + kPlannerGridSlackM;
 }
 
 // Largest first. A cluster longer than usefulRangeM (along its main axis) is cut into as many
 // equal pieces as it takes for each to be at most that long: one viewpoint sees at most that much
-// of it. The viewpoint is a free cell that the free cells join to the middle cell, nearest to the
-// point viewpointBackoffM from the middle into the free side, among those goalClearanceM from
-// every line (so the route planner, whose walls are inflated by the robot
-// radius, accepts it as a goal); where no such cell is near, the one farthest from the lines.
+// of it. (The range does not drop frontier cells far from where the robot scanned: the PlanningMap
+// holds no scan poses, and the freespace a region holds is what its scans saw, within range.) The
+// viewpoint is a free cell that the free cells join to the middle cell, nearest to the point
+// viewpointBackoffM from the middle into the free side, among those goalClearanceM from every line
+// (so that the route planner, whose walls are inflated by the robot radius, accepts it as a goal);
+// where no such cell is near, the one farthest from the lines.
 std::vector<Frontier> findFrontiers(const ExplorationGrid& grid, const FrontierConfig& config,
                                     double robotRadiusM = ExplorationConfig{}.robotRadiusM);
 

@@ -17,38 +17,40 @@ NearestFrontierExploration::NearestFrontierExploration(const ExplorationConfig& 
 
 ExplorationGoal NearestFrontierExploration::next(const ExplorationInput& input, const PathLength& pathLength) {
   const Eigen::Vector2d robot(input.robot.x, input.robot.y);
-  const ExplorationGrid grid = ExplorationGrid::fromMap(input.map, config_.grid);
-  const std::vector<OpenGateway> open = openGateways(input.map, grid, robot);
-  const std::vector<Frontier> frontiers =
-      candidateFrontiers(findFrontiers(grid, config_.frontier, config_.robotRadiusM), open, robot, frontierFailures_,
-                         config_.maxGoalFailures);
+  const Survey now = survey(input, config_, frontierFailures_);
+  const std::vector<Frontier>& frontiers = now.frontiers;
   Reachability reach(pathLength, robot);
   std::vector<Eigen::Vector2d> points;
   for (const Frontier& f : frontiers) points.push_back(f.viewpoint);
-  std::vector<GatewayId> gateways;
-  for (const OpenGateway& g : open) {
-    const auto point = drivePoint(g, grid, config_.robotRadiusM, reach);
-    if (!point || failuresAt(frontierFailures_, *point) >= config_.maxGoalFailures) continue;
-    if ((*point - robot).norm() <= kSameGoalM) {
-      countFailure(frontierFailures_, *point);
+  // A gateway ranks by its candidate farthest beyond its line, and its drive point is planned only
+  // if it is among the nearest, so that many open gateways do not cost plans each.
+  std::vector<const OpenGateway*> gateways;
+  for (const OpenGateway& g : now.open) {
+    const std::vector<Eigen::Vector2d> candidates = drivePointCandidates(g, now.grid, config_.robotRadiusM);
+    if (candidates.empty() || failuresAt(frontierFailures_, candidates.front()) >= config_.maxGoalFailures) continue;
+    if ((candidates.front() - robot).norm() <= kSameGoalM) {
+      countFailure(frontierFailures_, candidates.front());
       continue;
     }
-    points.push_back(*point);
-    gateways.push_back(g.id);
+    points.push_back(candidates.front());
+    gateways.push_back(&g);
   }
-  const auto best = reach.nearest(points);
+  const auto best = reach.nearest(points, [&](std::size_t i) -> std::optional<Eigen::Vector2d> {
+    if (i < frontiers.size()) return points[i];
+    return drivePoint(*gateways[i - frontiers.size()], now.grid, config_.robotRadiusM, reach);
+  });
   if (!best) return {ExplorationGoal::Kind::Done, robot, RegionId{}, GatewayId{}, "no reachable frontier left"};
   std::ostringstream reason;
   reason.precision(3);
-  if (best->first < frontiers.size()) {
-    const Frontier& f = frontiers[best->first];
-    reason << "nearest frontier: region " << f.region << " (" << f.lengthM() << " m), viewpoint " << best->second
+  if (best->index < frontiers.size()) {
+    const Frontier& f = frontiers[best->index];
+    reason << "nearest frontier: region " << f.region << " (" << f.lengthM() << " m), viewpoint " << best->lengthM
            << " m away";
     return {ExplorationGoal::Kind::Frontier, f.viewpoint, f.region, GatewayId{}, reason.str()};
   }
-  const GatewayId id = gateways[best->first - frontiers.size()];
-  reason << "nearest frontier: beyond untraversed gateway " << id << ", " << best->second << " m away";
-  return {ExplorationGoal::Kind::Gateway, points[best->first], RegionId{}, id, reason.str()};
+  const GatewayId id = gateways[best->index - frontiers.size()]->id;
+  reason << "nearest frontier: beyond untraversed gateway " << id << ", " << best->lengthM << " m away";
+  return {ExplorationGoal::Kind::Gateway, best->goal, RegionId{}, id, reason.str()};
 }
 
 void NearestFrontierExploration::failed(const ExplorationGoal& goal) { countFailure(frontierFailures_, goal.point); }

@@ -1,13 +1,19 @@
-// Region-by-region exploration (RgExploration.h; thesis chapter 7). Deliberate differences from
-// the thesis, which leaves the strategy to future work: the gateway queue is FIFO across regions
-// (breadth first over the RG graph), a frontier at an open gateway is the gateway's (see
-// ExplorationTargets.h), and a gateway is driven through to a point just past its line that the
-// route planner accepts.
+// Region-by-region exploration (RgExploration.h; thesis chapter 7: "each region should first be
+// completely explored before traversing any new gateway. Gateways that have not yet been traversed
+// can be stored on a stack ... visit these gateways in a breadth first manner"). Deliberate
+// differences from the thesis, which leaves the strategy to future work: the untraversed gateways
+// wait in a first-in first-out queue across regions, not a stack, since breadth first is what the
+// thesis asks for; a frontier at an open gateway is the gateway's (see
+// ExplorationTargets.h), a gateway is driven through to a point just past its line that the route
+// planner accepts, and a frontier is also the current region's when the current region's
+// freespace holds its viewpoint (where a lower region's freespace overlaps the current one).
 #include "core/nav/exploration/RgExploration.h"
 
 #include <algorithm>
+#include <limits>
 #include <sstream>
 
+#include "core/lines/ScanPoints.h"
 #include "core/nav/exploration/ExplorationTargets.h"
 
 namespace rgnav {
@@ -28,6 +34,27 @@ ExplorationGoal frontierGoal(const Frontier& f, double lengthM, const std::strin
   return {ExplorationGoal::Kind::Frontier, f.viewpoint, f.region, GatewayId{}, reason.str()};
 }
 
+// Whether the frontier is the region's to complete: its cells' region (the lowest of those whose
+// freespaces overlap there), or the region's freespace holds its viewpoint. A room entered
+// through a door its hallway saw into before the door was known overlaps the hallway's freespace,
+// and the room's frontiers there are the room's; their cells may lie just beyond the room's own
+// freespace, where the hallway saw farther, so the viewpoint decides, well inside.
+bool ofRegion(const Frontier& f, const RegionView& region) {
+  return f.region == region.summary.id ||
+         region.freespace.isFreeAt(transformPoint(inverse(region.summary.frame), f.viewpoint));
+}
+
+// The region on the side of a traversed gateway that was unknown when it was driven to: the side
+// that is not `from`, or (both were unknown) the side whose crossing point lies nearer `far`.
+RegionId regionBeyond(const GatewayView& g, RegionId from, const Eigen::Vector2d& far) {
+  if (!from.isNone()) return g.sideA == from ? g.sideB : g.sideA;
+  const auto distance = [&](std::size_t side) {
+    const std::size_t c = g.sideCrossings[side];
+    return c < g.crossingPoints.size() ? (g.crossingPoints[c] - far).norm() : std::numeric_limits<double>::infinity();
+  };
+  return distance(0) <= distance(1) ? g.sideA : g.sideB;
+}
+
 // The reachable frontier nearest by driving distance, if any.
 std::optional<ExplorationGoal> nearestFrontier(const std::vector<Frontier>& frontiers, Reachability& reach,
                                                const std::string& why) {
@@ -35,7 +62,7 @@ std::optional<ExplorationGoal> nearestFrontier(const std::vector<Frontier>& fron
   for (const Frontier& f : frontiers) points.push_back(f.viewpoint);
   const auto best = reach.nearest(points);
   if (!best) return std::nullopt;
-  return frontierGoal(frontiers[best->first], best->second, why);
+  return frontierGoal(frontiers[best->index], best->lengthM, why);
 }
 
 }  // namespace
@@ -44,8 +71,9 @@ RgExploration::RgExploration(const ExplorationConfig& config) : config_(config) 
 
 ExplorationGoal RgExploration::next(const ExplorationInput& input, const PathLength& pathLength) {
   const Eigen::Vector2d robot(input.robot.x, input.robot.y);
-  const ExplorationGrid grid = ExplorationGrid::fromMap(input.map, config_.grid);
-  const std::vector<OpenGateway> open = openGateways(input.map, grid, robot);
+  const Survey now = survey(input, config_, frontierFailures_);
+  const std::vector<OpenGateway>& open = now.open;
+  const std::vector<Frontier>& frontiers = now.frontiers;
 
   // The queue: traversed (or vanished, neutralised) gateways leave it, new open ones join its end.
   std::erase_if(queue_, [&](GatewayId id) {
@@ -54,23 +82,38 @@ ExplorationGoal RgExploration::next(const ExplorationInput& input, const PathLen
   for (const OpenGateway& g : open)
     if (seen_.insert(g.id).second) queue_.push_back(g.id);
 
-  Reachability reach(pathLength, robot);
-  const std::vector<Frontier> frontiers =
-      candidateFrontiers(findFrontiers(grid, config_.frontier, config_.robotRadiusM), open, robot, frontierFailures_,
-                         config_.maxGoalFailures);
+  // The gateway last driven to, once traversed, names the region to complete.
+  if (entering_ && std::none_of(open.begin(), open.end(), [&](const OpenGateway& g) { return g.id == *entering_; })) {
+    for (const GatewayView& g : input.map.gateways)
+      if (g.id == *entering_ && !g.neutralised) completing_ = regionBeyond(g, enteringFrom_, enteringFar_);
+    entering_.reset();
+  }
 
-  // 1. The current region's frontiers.
-  std::vector<Frontier> here;
-  std::copy_if(frontiers.begin(), frontiers.end(), std::back_inserter(here),
-               [&](const Frontier& f) { return !input.currentRegion.isNone() && f.region == input.currentRegion; });
-  if (auto goal = nearestFrontier(here, reach, "completing the current region")) return *goal;
+  Reachability reach(pathLength, robot);
+
+  // 1. The current region's frontiers, then those of the region entered last.
+  for (const RegionId region : {input.currentRegion, completing_}) {
+    const auto view = std::find_if(input.map.regions.begin(), input.map.regions.end(),
+                                   [&](const RegionView& r) { return r.summary.id == region; });
+    if (region.isNone() || view == input.map.regions.end()) continue;
+    std::vector<Frontier> own;
+    for (const Frontier& f : frontiers)
+      if (ofRegion(f, *view)) {
+        own.push_back(f);
+        own.back().region = region;
+      }
+    const std::string why = region == input.currentRegion ? "completing the current region"
+                                                          : "completing the region entered last";
+    if (auto goal = nearestFrontier(own, reach, why)) return *goal;
+  }
+  completing_ = RegionId{};
 
   // 2. The oldest open gateway that can be driven through; one that cannot leaves the queue. One
   // whose drive point the robot stands at was not reported traversed: counted as a failure (the
   // kernel may lag, so it stays queued until it failed maxGoalFailures times).
   for (auto it = queue_.begin(); it != queue_.end();) {
     const auto g = std::find_if(open.begin(), open.end(), [&](const OpenGateway& o) { return o.id == *it; });
-    const auto point = drivePoint(*g, grid, config_.robotRadiusM, reach);
+    const auto point = drivePoint(*g, now.grid, config_.robotRadiusM, reach);
     if (!point || (*point - robot).norm() <= kSameGoalM) {
       if (!point || ++gatewayFailures_[*it] >= config_.maxGoalFailures) {
         it = queue_.erase(it);
@@ -79,9 +122,13 @@ ExplorationGoal RgExploration::next(const ExplorationInput& input, const PathLen
       }
       continue;
     }
+    entering_ = *it;
+    enteringFrom_ = g->known;
+    enteringFar_ = g->far;
     std::ostringstream reason;
-    reason << "no reachable frontier left in region " << input.currentRegion << ": through untraversed gateway " << *it
-           << " of region " << g->known << " (" << queue_.size() << " queued) to " << text(*point);
+    reason << "no reachable frontier left in region " << input.currentRegion << ": through untraversed gateway " << *it;
+    if (!g->known.isNone()) reason << " of region " << g->known;
+    reason << " (" << queue_.size() << " queued) to " << text(*point);
     return {ExplorationGoal::Kind::Gateway, *point, RegionId{}, *it, reason.str()};
   }
 

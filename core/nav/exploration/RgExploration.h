@@ -7,14 +7,17 @@
 // in different regions: the queue is first-in first-out across all regions, so the gateways of a
 // region explored earlier are all taken before those found later, deeper in the building, as a
 // breadth-first search over the RG graph visits the nearer regions first. A gateway the robot
-// cannot reach, or that is traversed meanwhile (both sides known), leaves the queue. When the
-// queue is empty the frontiers of every region are taken, nearest first (a region left before it
-// was complete, say because a door was closed). Done when no reachable frontier and no gateway is
-// left.
+// cannot reach, or that is traversed meanwhile (both sides known), leaves the queue. The region
+// entered through the gateway last driven to is completed next even when the kernel's current
+// region is another (its traversal reached the kernel late, and the robot, sent on meanwhile,
+// stepped back through the door). When the queue is empty the frontiers of every region are
+// taken, nearest first (a region left before it was complete, say because a door was closed).
+// Done when no reachable frontier and no gateway is left.
 #pragma once
 
 #include <deque>
 #include <map>
+#include <optional>
 #include <set>
 
 #include "core/nav/exploration/ExplorationStrategy.h"
@@ -38,6 +41,12 @@ class RgExploration : public ExplorationStrategy {
   std::set<GatewayId> seen_;
   std::map<GatewayId, std::size_t> gatewayFailures_;
   std::vector<std::pair<Eigen::Vector2d, std::size_t>> frontierFailures_;  // failed viewpoints
+  // The gateway last driven to, until it is traversed, with its known side's region and its far
+  // crossing point; then the region beyond it, until that has no reachable frontier left.
+  std::optional<GatewayId> entering_;
+  RegionId enteringFrom_;
+  Eigen::Vector2d enteringFar_ = Eigen::Vector2d::Zero();
+  RegionId completing_;
 };
 
 }  // namespace rgnav

@@ -25,7 +25,8 @@ RegionView exploredRegion(RegionId id, const Pose2D& frame, const std::vector<Se
   for (const Segment2& w : walls) r.lines.push_back({transformPoint(toRegion, w.a), transformPoint(toRegion, w.b)});
   Eigen::Vector2d lo = Eigen::Vector2d::Constant(1e9), hi = -lo;
   for (const FreeRect& f : free)
-    for (const Eigen::Vector2d& c : {f.min, f.max, Eigen::Vector2d(f.min.x(), f.max.y()), Eigen::Vector2d(f.max.x(), f.min.y())}) {
+    for (const Eigen::Vector2d& c :
+         {f.min, f.max, Eigen::Vector2d(f.min.x(), f.max.y()), Eigen::Vector2d(f.max.x(), f.min.y())}) {
       lo = lo.cwiseMin(transformPoint(toRegion, c));
       hi = hi.cwiseMax(transformPoint(toRegion, c));
     }
