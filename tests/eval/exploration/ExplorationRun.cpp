@@ -50,14 +50,21 @@ std::string explorationLine(const std::string& mapName, const ExplorationResult&
 
 Pose2D startInFirstRoom(const OccupancyGrid& world, const GroundTruth& truth, double robotRadiusM) {
   const ClearanceMap clearance(world);
-  std::optional<CellIndex> best;
+  // Per room, its cell farthest from any wall.
+  std::vector<std::optional<CellIndex>> best(std::size_t(std::max(truth.roomCount, 0)));
   for (int row = 0; row < world.height(); ++row)
-    for (int col = 0; col < world.width(); ++col)
-      if (truth.roomOf({col, row}) == 0 && (!best || clearance.at({col, row}) > clearance.at(*best))) best = {col, row};
-  if (!best || clearance.at(*best) < robotRadiusM + world.resolution())
-    throw InvalidArgumentError("the first ground-truth room has no cell where the robot fits");
-  const WorldPoint p = world.center(*best);
-  return {p.x, p.y, 0.0};
+    for (int col = 0; col < world.width(); ++col) {
+      const int room = truth.roomOf({col, row});
+      if (room < 0) continue;
+      std::optional<CellIndex>& b = best[std::size_t(room)];
+      if (!b || clearance.at({col, row}) > clearance.at(*b)) b = CellIndex{col, row};
+    }
+  for (const std::optional<CellIndex>& cell : best)
+    if (cell && clearance.at(*cell) >= robotRadiusM + world.resolution()) {
+      const WorldPoint p = world.center(*cell);
+      return {p.x, p.y, 0.0};
+    }
+  throw InvalidArgumentError("no ground-truth room has a cell where the robot fits");
 }
 
 ExplorationResult runExploration(InProcessRobot& robot, TruthCoverage& coverage, const ExplorationSetup& setup) {

@@ -46,8 +46,9 @@ struct ExplorationResult {
 // ("n/a": never seen so much).
 std::string explorationLine(const std::string& mapName, const ExplorationResult& result);
 
-// The first ground-truth room's start: its free cell farthest from any wall, heading 0
-// (InvalidArgumentError if room 0 has no cell where the robot fits).
+// The start in the first ground-truth room (lowest ID) the robot fits in (a room under furniture,
+// a niche, may not hold it): the room's free cell farthest from any wall, heading 0.
+// InvalidArgumentError if no room has a cell where the robot fits.
 Pose2D startInFirstRoom(const OccupancyGrid& world, const GroundTruth& truth, double robotRadiusM);
 
 // Drives `robot` (just made, standing at its start) until done or the time limit; every true
