@@ -7,8 +7,9 @@
 
 #include "core/common/Errors.h"
 #include "core/nav/exploration/Explorer.h"
-#include "core/nav/grid/ClearanceMap.h"
+#include "core/nav/grid/GridPlanner.h"
 #include "core/nav/grid/PlanningErrors.h"
+#include "core/sim/StartPose.h"
 
 namespace rgnav {
 namespace {
@@ -49,22 +50,26 @@ std::string explorationLine(const std::string& mapName, const ExplorationResult&
 }
 
 Pose2D startInFirstRoom(const OccupancyGrid& world, const GroundTruth& truth, double robotRadiusM) {
-  const ClearanceMap clearance(world);
-  // Per room, its cell farthest from any wall.
+  GridPlannerConfig config;
+  config.robotRadius = robotRadiusM;
+  const GridPlanner planner(world, config);
+  const Pose2D open = openestPose(world);
+  const std::vector<bool> floor = planner.reachableFrom({open.x, open.y});
+  // Per room, its cell on the floor farthest from any wall.
   std::vector<std::optional<CellIndex>> best(std::size_t(std::max(truth.roomCount, 0)));
   for (int row = 0; row < world.height(); ++row)
     for (int col = 0; col < world.width(); ++col) {
       const int room = truth.roomOf({col, row});
-      if (room < 0) continue;
+      if (room < 0 || !floor[rowMajor({col, row}, world.width())]) continue;
       std::optional<CellIndex>& b = best[std::size_t(room)];
-      if (!b || clearance.at({col, row}) > clearance.at(*b)) b = CellIndex{col, row};
+      if (!b || planner.clearance().at({col, row}) > planner.clearance().at(*b)) b = CellIndex{col, row};
     }
   for (const std::optional<CellIndex>& cell : best)
-    if (cell && clearance.at(*cell) >= robotRadiusM + world.resolution()) {
+    if (cell) {
       const WorldPoint p = world.center(*cell);
       return {p.x, p.y, 0.0};
     }
-  throw InvalidArgumentError("no ground-truth room has a cell where the robot fits");
+  throw InvalidArgumentError("no ground-truth room lies on the floor the robot can drive");
 }
 
 ExplorationResult runExploration(InProcessRobot& robot, TruthCoverage& coverage, const ExplorationSetup& setup) {

@@ -46,9 +46,10 @@ struct ExplorationResult {
 // ("n/a": never seen so much).
 std::string explorationLine(const std::string& mapName, const ExplorationResult& result);
 
-// The start in the first ground-truth room (lowest ID) the robot fits in (a room under furniture,
-// a niche, may not hold it): the room's free cell farthest from any wall, heading 0.
-// InvalidArgumentError if no room has a cell where the robot fits.
+// The start in the first ground-truth room (lowest ID) on the floor: the traversable cells
+// connected to the floor plan's most open place (openestPose), which leaves out rooms the robot
+// does not fit in and scraps of free space outside the building (Freiburg79_scan's rooms 0 and 1);
+// the room's cell there farthest from any wall, heading 0. InvalidArgumentError if there is none.
 Pose2D startInFirstRoom(const OccupancyGrid& world, const GroundTruth& truth, double robotRadiusM);
 
 // Drives `robot` (just made, standing at its start) until done or the time limit; every true
