@@ -105,6 +105,8 @@ ExplorationResult runExploration(InProcessRobot& robot, TruthCoverage& coverage,
     const ExplorationInput input{robot.planner().map(), pose, robot.kernel().state().current};
     const ExplorerStep next = explorer.update(input, outcomeOf(robot.drive().state()), robot.time() - start, pathLength);
     if (next.action == ExplorerStep::Action::Done) {
+      if (setup.trace)
+        std::printf("# %s t=%.1f done: %s\n", setup.strategy.c_str(), robot.time() - start, next.goal.reason.c_str());
       robot.cancelDrive();
       result.done = true;
       break;
