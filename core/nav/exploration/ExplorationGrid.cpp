@@ -2,7 +2,12 @@
 // sampled at the grid's cell centres through the region frames, the regions' line maps rendered
 // into it with OpenCV's cv::line (8-connected, sub-cell endpoints) and their distance taken with
 // cv::distanceTransform (exact Euclidean), so that every cell within wallClearanceM of a line is
-// Wall, also where a region's freespace claims it.
+// Wall, also where a region's freespace claims it. Deliberate addition: the freespace bitmap tells
+// no obstacle from unexplored floor (both are "not free"), so a chair, a table's legs or a person
+// the laser saw in the middle of a room leaves a hole in it that the line map does not cover; such
+// an unknown pocket, enclosed by free and wall cells and smaller than 1 m², is Wall here, not
+// something to explore (frontiers would circle it). Larger enclosed pockets (an unseen room inside
+// a ring of hallways) stay unknown.
 #include "core/nav/exploration/ExplorationGrid.h"
 
 #include <algorithm>
@@ -20,6 +25,7 @@ namespace {
 
 constexpr double kMaxCells = 5e7;  // 5000 m² at 1 cm, 500 000 m² at 10 cm: far beyond any building
 constexpr int kLineShift = 4;      // cv::line's fractional bits for sub-cell endpoints
+constexpr double kMaxPocketM2 = 1.0;  // enclosed unknown pockets smaller than this are obstacles
 
 struct Box {
   Eigen::Vector2d min = Eigen::Vector2d::Constant(std::numeric_limits<double>::infinity());
@@ -48,6 +54,29 @@ Box freeBox(const RegionView& region) {
   for (const Eigen::Vector2d& corner : {lo, hi, Eigen::Vector2d(lo.x(), hi.y()), Eigen::Vector2d(hi.x(), lo.y())})
     box.add(transformPoint(region.summary.frame, corner));
   return box;
+}
+
+// Unknown pockets (4-connected unknown cells that do not reach the grid's border) of fewer than
+// `maxCells` cells become Wall: see the file comment.
+void closePockets(std::vector<ExplorationCell>& cells, int width, int height, int maxCells) {
+  cv::Mat unknown(height, width, CV_8U);
+  for (int row = 0; row < height; ++row)
+    for (int col = 0; col < width; ++col)
+      unknown.at<std::uint8_t>(row, col) =
+          cells[static_cast<std::size_t>(row) * width + col] == ExplorationCell::Unknown ? 255 : 0;
+  cv::Mat labels, stats, centroids;
+  const int count = cv::connectedComponentsWithStats(unknown, labels, stats, centroids, 4, CV_32S);
+  std::vector<char> pocket(static_cast<std::size_t>(count), 0);
+  for (int label = 1; label < count; ++label) {
+    const int left = stats.at<int>(label, cv::CC_STAT_LEFT), top = stats.at<int>(label, cv::CC_STAT_TOP);
+    const int right = left + stats.at<int>(label, cv::CC_STAT_WIDTH), bottom = top + stats.at<int>(label, cv::CC_STAT_HEIGHT);
+    const bool border = left == 0 || top == 0 || right == width || bottom == height;
+    pocket[static_cast<std::size_t>(label)] = !border && stats.at<int>(label, cv::CC_STAT_AREA) < maxCells;
+  }
+  for (int row = 0; row < height; ++row)
+    for (int col = 0; col < width; ++col)
+      if (pocket[static_cast<std::size_t>(labels.at<int>(row, col))])
+        cells[static_cast<std::size_t>(row) * width + col] = ExplorationCell::Wall;
 }
 
 }  // namespace
@@ -136,6 +165,7 @@ ExplorationGrid ExplorationGrid::fromMap(const PlanningMap& map, const Explorati
         }
       }
   }
+  closePockets(grid.cells_, grid.width_, grid.height_, static_cast<int>(kMaxPocketM2 / (res * res)));
   return grid;
 }
 

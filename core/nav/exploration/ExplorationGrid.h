@@ -1,9 +1,10 @@
 // ExplorationGrid: what exploration knows of the world, taken from an RG map (PlanningMap.h) on
 // one map-frame grid: a cell is Free if it lies in some region's freespace (the regions' 15 cm
 // freespace bitmaps placed by their region frames), Wall if it lies within wallClearanceM of a line
-// of some region's line map (also where a freespace holds it), Unknown otherwise. Each free cell
-// keeps the region whose freespace holds it (the one with the lowest ID where regions overlap).
-// Built anew for each map revision.
+// of some region's line map (also where a freespace holds it) or in an unknown pocket smaller than
+// 1 m² that free and wall cells enclose (an obstacle without lines: the bitmap tells no obstacle
+// from unexplored floor), Unknown otherwise. Each free cell keeps the region whose freespace holds
+// it (the one with the lowest ID where regions overlap). Built anew for each map revision.
 #pragma once
 
 #include <Eigen/Core>

@@ -1,8 +1,9 @@
 // Tests the exploration grid and its frontiers on small RG maps (ExplorationRooms.h): free,
 // wall and unknown cells through rotated region frames, the lowest region where freespaces
-// overlap; a frontier along an open side and none along walls, its region, middle and a
-// viewpoint the route planner plans to; a frontier longer than the useful range cut into pieces;
-// clusters below minCells dropped; an empty map.
+// overlap, a small hole in a freespace an obstacle and a large one unknown; a frontier along an
+// open side and none along walls, its region, middle and a viewpoint the route planner plans to; a
+// frontier longer than the useful range cut into pieces; clusters below minCells dropped; an empty
+// map.
 #include <cppunit/extensions/HelperMacros.h>
 
 #include <algorithm>
@@ -49,6 +50,7 @@ class ExplorationGridTest : public CppUnit::TestFixture {
   CPPUNIT_TEST_SUITE(ExplorationGridTest);
   CPPUNIT_TEST(cellsAreFreeWallOrUnknownInTheMapFrame);
   CPPUNIT_TEST(overlappingFreespaceBelongsToTheLowestRegion);
+  CPPUNIT_TEST(aSmallEnclosedHoleIsAnObstacleNotAFrontier);
   CPPUNIT_TEST(aFrontierLiesAlongTheOpenSideOnly);
   CPPUNIT_TEST(theViewpointIsAGoalThePlannerAccepts);
   CPPUNIT_TEST(aFrontierLongerThanTheUsefulRangeIsCut);
@@ -84,6 +86,27 @@ class ExplorationGridTest : public CppUnit::TestFixture {
     CPPUNIT_ASSERT(regionAt(grid, {3.5, 2.0}) == RegionId{1});
     CPPUNIT_ASSERT(regionAt(grid, {5.0, 2.0}) == RegionId{2});
     CPPUNIT_ASSERT(std::isinf(grid.wallDistanceM(1, 1)));  // no lines at all
+  }
+
+  void aSmallEnclosedHoleIsAnObstacleNotAFrontier() {
+    // A closed room whose freespace has a hole where the laser saw a chair (no line): the hole is
+    // an obstacle, no frontier. A hole of 4 m² in a larger room stays unknown: a frontier around it.
+    const auto withHole = [](double size, double hole) {
+      const double a = 0.5 * (size - hole), b = 0.5 * (size + hole);
+      return planningMap({exploredRegion(RegionId{1}, kTilted,
+                                         {{{0, 0}, {size, 0}}, {{0, 0}, {0, size}}, {{size, 0}, {size, size}},
+                                          {{0, size}, {size, size}}},
+                                         {{{0, 0}, {size, a}}, {{0, b}, {size, size}}, {{0, a}, {a, b}}, {{b, a}, {size, b}}})},
+                         {});
+    };
+    const ExplorationGrid small = ExplorationGrid::fromMap(withHole(4.0, 0.6), {});
+    CPPUNIT_ASSERT(cellAt(small, {2.0, 2.0}) == ExplorationCell::Wall);
+    CPPUNIT_ASSERT(rgnav::findFrontiers(small, {}).empty());
+    const ExplorationGrid large = ExplorationGrid::fromMap(withHole(8.0, 2.0), {});
+    CPPUNIT_ASSERT(cellAt(large, {4.0, 4.0}) == ExplorationCell::Unknown);
+    const std::vector<Frontier> around = rgnav::findFrontiers(large, {});
+    CPPUNIT_ASSERT_EQUAL(std::size_t(1), around.size());
+    CPPUNIT_ASSERT((around[0].middle - Vector2d(4.0, 4.0)).norm() < 1.5);
   }
 
   void aFrontierLiesAlongTheOpenSideOnly() {

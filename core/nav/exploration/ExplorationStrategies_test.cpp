@@ -1,10 +1,14 @@
 // Tests the two exploration strategies on small RG maps (ExplorationRooms.h). RG exploration:
 // the current region's frontier before any gateway; then an untraversed door, driven through to a
 // point past its line that the route planner plans to, not to the frontier the kernel's door cut
-// leaves there; the gateway queue first-in first-out across regions, a traversed gateway leaving
-// it; Done when nothing is left. Nearest frontier: the nearest by driving distance, not by
-// straight line; an unreachable frontier and one failed maxGoalFailures times are skipped.
+// leaves there; gateways breadth first, region by region in the order their regions found them,
+// the nearest of one region's first, a traversed gateway leaving the queue; the region entered
+// last completed after the robot stepped back out of it; a door not seen through yet kept and
+// looked through; Done when nothing is left. Nearest frontier: the nearest by driving distance, not
+// by straight line; an unreachable frontier and one failed maxGoalFailures times are skipped.
 #include <cppunit/extensions/HelperMacros.h>
+
+#include <cmath>
 
 #include "core/common/Errors.h"
 #include "core/nav/exploration/NearestFrontierExploration.h"
@@ -75,8 +79,10 @@ class ExplorationStrategiesTest : public CppUnit::TestFixture {
   CPPUNIT_TEST(rgCompletesTheCurrentRegionBeforeAnyGateway);
   CPPUNIT_TEST(rgDrivesThroughAnUntraversedDoorToAPlannablePoint);
   CPPUNIT_TEST(rgCompletesARoomItsHallwaySawInto);
-  CPPUNIT_TEST(rgTakesGatewaysFirstInFirstOutAcrossRegions);
+  CPPUNIT_TEST(rgTakesGatewaysRegionByRegion);
   CPPUNIT_TEST(rgCompletesTheRegionEnteredLastAfterSteppingBack);
+  CPPUNIT_TEST(rgTakesTheNearestGatewayOfARegionFirst);
+  CPPUNIT_TEST(aDoorNotSeenThroughYetLeadsTheRobotToLook);
   CPPUNIT_TEST(rgDropsAGatewayFailedTooOften);
   CPPUNIT_TEST(rgIsDoneWhenNothingIsLeft);
   CPPUNIT_TEST(nearestFrontierIsNearestByDrivingDistance);
@@ -137,15 +143,16 @@ class ExplorationStrategiesTest : public CppUnit::TestFixture {
     CPPUNIT_ASSERT(goal.point.y() > 3.3 && goal.point.y() < 3.9);
   }
 
-  void rgTakesGatewaysFirstInFirstOutAcrossRegions() {
-    // Regions 1 and 2 joined by door 1; door 5 leads on from region 2, seen first.
+  void rgTakesGatewaysRegionByRegion() {
+    // Regions 1 and 2 joined by door 1; door 5 leads on from region 2, seen from there first.
     const auto r1 = room(kR1, 0.0, false, true), r2 = room(kR2, 4.0, true, true);
     const auto d1 = doorAt(GatewayId{1}, 4.0, kR1, kR2);
     rgnav::RgExploration rg({});
     const Pose2D inR1{1.0, 2.0, 0.0};
     auto map = planningMap({r1, r2}, {d1, doorAt(GatewayId{5}, 8.0, kR2, kNone)});
-    CPPUNIT_ASSERT(rg.next({map, inR1, kR1}, straightLine({1.0, 2.0})).gateway == GatewayId{5});
-    // Door 4 in region 1's left wall, seen later, nearer, with a lower ID: queued behind door 5.
+    CPPUNIT_ASSERT(rg.next({map, {6.0, 2.0, 0.0}, kR2}, straightLine({6.0, 2.0})).gateway == GatewayId{5});
+    // Door 4 in region 1's left wall, seen later from region 1, nearer, with a lower ID: region 2's
+    // gateways come first.
     const RegionView r1WithDoor = room(kR1, 0.0, true, true);
     map = planningMap({r1WithDoor, r2}, {d1, doorAt(GatewayId{4}, 0.0, kNone, kR1), doorAt(GatewayId{5}, 8.0, kR2, kNone)});
     const ExplorationGoal second = rg.next({map, inR1, kR1}, straightLine({1.0, 2.0}));
@@ -164,10 +171,9 @@ class ExplorationStrategiesTest : public CppUnit::TestFixture {
 
   void rgCompletesTheRegionEnteredLastAfterSteppingBack() {
     rgnav::RgExploration rg({});
-    const Pose2D inR1{1.0, 2.0, 0.0};
     auto map = planningMap({room(kR1, 0.0, true, true)},
                            {doorAt(GatewayId{1}, 4.0, kR1, kNone), doorAt(GatewayId{2}, 0.0, kNone, kR1)});
-    CPPUNIT_ASSERT(rg.next({map, inR1, kR1}, straightLine({1.0, 2.0})).gateway == GatewayId{1});
+    CPPUNIT_ASSERT(rg.next({map, {3.0, 2.0, 0.0}, kR1}, straightLine({3.0, 2.0})).gateway == GatewayId{1});
     // Door 1 traversed into room 2, whose top wall has a gap; the robot, sent on before the
     // kernel knew, stepped back into region 1, which the kernel now calls current.
     map = planningMap({room(kR1, 0.0, true, true), room(kR2, 4.0, true, false, true)},
@@ -176,6 +182,31 @@ class ExplorationStrategiesTest : public CppUnit::TestFixture {
     CPPUNIT_ASSERT(goal.kind == Kind::Frontier);
     CPPUNIT_ASSERT(goal.region == kR2);
     CPPUNIT_ASSERT(rg.queue() == std::deque<GatewayId>({GatewayId{2}}));
+  }
+
+  void rgTakesTheNearestGatewayOfARegionFirst() {
+    // Doors 1 (left) and 2 (right) both found from region 1: the nearer one first, whatever the
+    // order they were seen in.
+    const auto map = planningMap({room(kR1, 0.0, true, true)},
+                                 {doorAt(GatewayId{1}, 0.0, kNone, kR1), doorAt(GatewayId{2}, 4.0, kR1, kNone)});
+    rgnav::RgExploration rg({});
+    const ExplorationGoal goal = rg.next({map, {3.0, 2.0, 0.0}, kR1}, straightLine({3.0, 2.0}));
+    CPPUNIT_ASSERT(goal.gateway == GatewayId{2});
+    CPPUNIT_ASSERT(rg.queue() == std::deque<GatewayId>({GatewayId{1}, GatewayId{2}}));
+  }
+
+  void aDoorNotSeenThroughYetLeadsTheRobotToLook() {
+    // A 1.2 m door seen at a slant: region 1's freespace stops at its line, so no point past it
+    // can be planned yet. The gateway waits in the queue, and its frontier is a goal.
+    const std::vector<Segment2> walls{{{0, 0}, {4, 0}}, {{0, 4}, {4, 4}}, {{0, 0}, {0, 4}},
+                                      {{4, 0}, {4, 1.4}}, {{4, 2.6}, {4, 4}}};
+    const auto map = planningMap({exploredRegion(kR1, {}, walls, {{{0.0, 0.0}, {4.0, 4.0}}})},
+                                 {door(GatewayId{1}, {4.0, 1.4}, {4.0, 2.6}, kR1, kNone)});
+    rgnav::RgExploration rg({});
+    const ExplorationGoal goal = rg.next({map, {1.0, 2.0, 0.0}, kR1}, straightLine({1.0, 2.0}));
+    CPPUNIT_ASSERT(goal.kind == Kind::Frontier);
+    CPPUNIT_ASSERT(goal.point.x() > 3.0 && std::abs(goal.point.y() - 2.0) < 0.3);
+    CPPUNIT_ASSERT_EQUAL(std::size_t(1), rg.queue().size());
   }
 
   void rgDropsAGatewayFailedTooOften() {

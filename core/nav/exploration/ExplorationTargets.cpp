@@ -32,6 +32,23 @@ std::size_t farthestFrom(const std::vector<Eigen::Vector2d>& points, const Eigen
   return best;
 }
 
+// The drive point candidates (openGateways).
+std::vector<Eigen::Vector2d> drivePointCandidates(const OpenGateway& gateway, const ExplorationGrid& grid,
+                                                  double robotRadiusM) {
+  std::vector<Eigen::Vector2d> out;
+  const double span = (gateway.far - gateway.near).norm(), cell = grid.resolutionM();
+  if (span <= 0.0) return out;
+  const Eigen::Vector2d middle = 0.5 * (gateway.near + gateway.far), away = (gateway.far - gateway.near) / span;
+  for (double past = 0.5 * span; past >= cell - 1e-9; past -= cell) {
+    const Eigen::Vector2d p = middle + away * past;
+    int col = 0, row = 0;
+    if (grid.cellOf(p, col, row) && grid.at(col, row) == ExplorationCell::Free &&
+        grid.wallDistanceM(col, row) >= robotRadiusM)
+      out.push_back(p);
+  }
+  return out;
+}
+
 std::optional<OpenGateway> openGateway(const GatewayView& g, const ExplorationGrid& grid, const Eigen::Vector2d& robot) {
   if (g.neutralised || (!g.sideA.isNone() && !g.sideB.isNone()) || g.crossingPoints.size() < 2) return std::nullopt;
   const std::optional<std::size_t> knownSide =
@@ -56,7 +73,7 @@ std::optional<OpenGateway> openGateway(const GatewayView& g, const ExplorationGr
   }
   if (!near) near = farthestFrom(g.crossingPoints, g.crossingPoints[*far], *far);
   if (!far || *far == *near) far = farthestFrom(g.crossingPoints, g.crossingPoints[*near], *near);
-  OpenGateway out{g.id, known, g.crossingPoints[*near], g.crossingPoints[*far], 0.0};
+  OpenGateway out{g.id, known, g.crossingPoints[*near], g.crossingPoints[*far], 0.0, {}};
   for (const Eigen::Vector2d& a : g.gatewayPoints)
     for (const Eigen::Vector2d& b : g.gatewayPoints) out.halfWidthM = std::max(out.halfWidthM, 0.5 * (a - b).norm());
   return out;
@@ -70,6 +87,7 @@ bool pastGateway(const OpenGateway& g, const Eigen::Vector2d& point, double cell
 
 bool atOpenGateway(const Frontier& f, const std::vector<OpenGateway>& gateways) {
   return std::any_of(gateways.begin(), gateways.end(), [&](const OpenGateway& g) {
+    if (g.drivePoints.empty()) return false;
     const auto past = std::count_if(f.cells.begin(), f.cells.end(),
                                     [&](const Eigen::Vector2d& c) { return pastGateway(g, c, f.cellSizeM); });
     return 2 * static_cast<std::size_t>(past) >= f.cells.size();
@@ -78,10 +96,14 @@ bool atOpenGateway(const Frontier& f, const std::vector<OpenGateway>& gateways) 
 
 }  // namespace
 
-std::vector<OpenGateway> openGateways(const PlanningMap& map, const ExplorationGrid& grid, const Eigen::Vector2d& robot) {
+std::vector<OpenGateway> openGateways(const PlanningMap& map, const ExplorationGrid& grid, const Eigen::Vector2d& robot,
+                                      double robotRadiusM) {
   std::vector<OpenGateway> out;
   for (const GatewayView& g : map.gateways)
-    if (const auto open = openGateway(g, grid, robot)) out.push_back(*open);
+    if (auto open = openGateway(g, grid, robot)) {
+      open->drivePoints = drivePointCandidates(*open, grid, robotRadiusM);
+      out.push_back(std::move(*open));
+    }
   return out;
 }
 
@@ -137,34 +159,16 @@ std::optional<Reachability::Nearest> Reachability::nearest(
   return std::nullopt;
 }
 
-std::vector<Eigen::Vector2d> drivePointCandidates(const OpenGateway& gateway, const ExplorationGrid& grid,
-                                                  double robotRadiusM) {
-  std::vector<Eigen::Vector2d> out;
-  const double span = (gateway.far - gateway.near).norm(), cell = grid.resolutionM();
-  if (span <= 0.0) return out;
-  const Eigen::Vector2d middle = 0.5 * (gateway.near + gateway.far), away = (gateway.far - gateway.near) / span;
-  for (double past = 0.5 * span; past >= cell - 1e-9; past -= cell) {
-    const Eigen::Vector2d p = middle + away * past;
-    int col = 0, row = 0;
-    if (grid.cellOf(p, col, row) && grid.at(col, row) == ExplorationCell::Free &&
-        grid.wallDistanceM(col, row) >= robotRadiusM)
-      out.push_back(p);
-  }
-  return out;
-}
-
-std::optional<Eigen::Vector2d> drivePoint(const OpenGateway& gateway, const ExplorationGrid& grid, double robotRadiusM,
-                                          Reachability& reach) {
-  const std::vector<Eigen::Vector2d> candidates = drivePointCandidates(gateway, grid, robotRadiusM);
-  for (std::size_t i = 0; i < std::min(candidates.size(), kDrivePointPlans); ++i)
-    if (reach.lengthTo(candidates[i])) return candidates[i];
+std::optional<Eigen::Vector2d> drivePoint(const OpenGateway& gateway, Reachability& reach) {
+  for (std::size_t i = 0; i < std::min(gateway.drivePoints.size(), kDrivePointPlans); ++i)
+    if (reach.lengthTo(gateway.drivePoints[i])) return gateway.drivePoints[i];
   return std::nullopt;
 }
 
 Survey survey(const ExplorationInput& input, const ExplorationConfig& config, PointFailures& failures) {
   const Eigen::Vector2d robot(input.robot.x, input.robot.y);
   Survey out{ExplorationGrid::fromMap(input.map, config.grid), {}, {}};
-  out.open = openGateways(input.map, out.grid, robot);
+  out.open = openGateways(input.map, out.grid, robot, config.robotRadiusM);
   for (const Frontier& f : findFrontiers(out.grid, config.frontier, config.robotRadiusM)) {
     if (atOpenGateway(f, out.open) || failuresAt(failures, f.viewpoint) >= config.maxGoalFailures) continue;
     if ((f.viewpoint - robot).norm() <= kSameGoalM) {

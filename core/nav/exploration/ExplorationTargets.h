@@ -19,12 +19,16 @@
 //     plans to is the goal: the robot ends on the far side (the collision avoidance stops within
 //     0.1 m of a goal; the kernel's cut leaves 0.2 to 0.3 m past a door to aim at), the traversal
 //     is reported, the kernel opens the new region.
-//     A gateway with no such point cannot be traversed by driving to a goal; it is not driven to
-//     at all (driving to its near crossing point would leave the robot in front of it for ever).
+//     A gateway with candidates none of which plans cannot be traversed by driving to a goal; it is
+//     not driven to at all (driving to its near crossing point would leave the robot in front of
+//     it for ever). A gateway with no candidate yet (the freespace does not reach past its line:
+//     the robot saw the door at a slant) is no target yet.
 //   - Frontiers at open gateways belong to the gateway, not to the region: the region's freespace
 //     past its door (the kernel's cut) ends in a frontier the robot can never see beyond without
 //     traversing. A frontier is at an open gateway when most of its cells lie beyond the
-//     gateway's line and within half the gateway's width plus kGatewayFrontierReachM of its middle.
+//     gateway's line and within half the gateway's width plus kGatewayFrontierReachM of its middle,
+//     and the gateway has drive point candidates (else the frontier leads the robot to look
+//     through the door, which gives it some).
 //   - Failures: points (viewpoints) counted within kSameGoalM; a point failed maxGoalFailures
 //     times is skipped. A frontier still there while the robot stands at its viewpoint was looked
 //     at and stays (glass, a region cut): counted as a failure and skipped this time.
@@ -58,10 +62,14 @@ struct OpenGateway {
   Eigen::Vector2d near = Eigen::Vector2d::Zero();   // crossing point on the known side
   Eigen::Vector2d far = Eigen::Vector2d::Zero();    // crossing point beyond
   double halfWidthM = 0.0;                          // half the spread of its gateway points
+  std::vector<Eigen::Vector2d> drivePoints;         // its drive point candidates, farthest first
 };
 
-// In the order of map.gateways.
-std::vector<OpenGateway> openGateways(const PlanningMap& map, const ExplorationGrid& grid, const Eigen::Vector2d& robot);
+// In the order of map.gateways; drive point candidates: those the grid shows free and the robot
+// radius clear of the lines (the planner decides on the ones this leaves: at a door they lie close
+// to its jambs).
+std::vector<OpenGateway> openGateways(const PlanningMap& map, const ExplorationGrid& grid, const Eigen::Vector2d& robot,
+                                      double robotRadiusM);
 
 using PointFailures = std::vector<std::pair<Eigen::Vector2d, std::size_t>>;
 void countFailure(PointFailures& failures, const Eigen::Vector2d& point);
@@ -91,14 +99,8 @@ class Reachability {
   std::vector<std::pair<Eigen::Vector2d, std::optional<double>>> asked_;
 };
 
-// The gateway's drive point candidates that the grid shows free and the robot radius clear of the
-// lines (the planner decides on the ones this leaves: at a narrow door they lie close to its
-// jambs), farthest beyond the line first (see above); none planned.
-std::vector<Eigen::Vector2d> drivePointCandidates(const OpenGateway& gateway, const ExplorationGrid& grid,
-                                                  double robotRadiusM);
 // The gateway's drive point: the first of its first few candidates that the planner plans to.
-std::optional<Eigen::Vector2d> drivePoint(const OpenGateway& gateway, const ExplorationGrid& grid, double robotRadiusM,
-                                          Reachability& reach);
+std::optional<Eigen::Vector2d> drivePoint(const OpenGateway& gateway, Reachability& reach);
 
 // What a strategy chooses from on the map now: its grid, its open gateways, and the frontiers worth
 // a goal (not at open gateways, their viewpoints not failed out, nor the one the robot stands

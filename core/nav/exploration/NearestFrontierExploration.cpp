@@ -26,18 +26,18 @@ ExplorationGoal NearestFrontierExploration::next(const ExplorationInput& input, 
   // if it is among the nearest, so that many open gateways do not cost plans each.
   std::vector<const OpenGateway*> gateways;
   for (const OpenGateway& g : now.open) {
-    const std::vector<Eigen::Vector2d> candidates = drivePointCandidates(g, now.grid, config_.robotRadiusM);
-    if (candidates.empty() || failuresAt(frontierFailures_, candidates.front()) >= config_.maxGoalFailures) continue;
-    if ((candidates.front() - robot).norm() <= kSameGoalM) {
-      countFailure(frontierFailures_, candidates.front());
+    if (g.drivePoints.empty() || failuresAt(frontierFailures_, g.drivePoints.front()) >= config_.maxGoalFailures)
+      continue;
+    if ((g.drivePoints.front() - robot).norm() <= kSameGoalM) {
+      countFailure(frontierFailures_, g.drivePoints.front());
       continue;
     }
-    points.push_back(candidates.front());
+    points.push_back(g.drivePoints.front());
     gateways.push_back(&g);
   }
   const auto best = reach.nearest(points, [&](std::size_t i) -> std::optional<Eigen::Vector2d> {
     if (i < frontiers.size()) return points[i];
-    return drivePoint(*gateways[i - frontiers.size()], now.grid, config_.robotRadiusM, reach);
+    return drivePoint(*gateways[i - frontiers.size()], reach);
   });
   if (!best) return {ExplorationGoal::Kind::Done, robot, RegionId{}, GatewayId{}, "no reachable frontier left"};
   std::ostringstream reason;

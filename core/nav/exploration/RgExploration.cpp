@@ -2,8 +2,9 @@
 // completely explored before traversing any new gateway. Gateways that have not yet been traversed
 // can be stored on a stack ... visit these gateways in a breadth first manner"). Deliberate
 // differences from the thesis, which leaves the strategy to future work: the untraversed gateways
-// wait in a first-in first-out queue across regions, not a stack, since breadth first is what the
-// thesis asks for; a frontier at an open gateway is the gateway's (see
+// wait in a queue, not a stack, since breadth first is what the thesis asks for, and are taken
+// region by region (the regions they were found from, first-in first-out), the nearest of a
+// region's first; a frontier at an open gateway is the gateway's (see
 // ExplorationTargets.h), a gateway is driven through to a point just past its line that the route
 // planner accepts, and a frontier is also the current region's when the current region's
 // freespace holds its viewpoint (where a lower region's freespace overlaps the current one).
@@ -80,7 +81,10 @@ ExplorationGoal RgExploration::next(const ExplorationInput& input, const PathLen
     return std::none_of(open.begin(), open.end(), [&](const OpenGateway& g) { return g.id == id; });
   });
   for (const OpenGateway& g : open)
-    if (seen_.insert(g.id).second) queue_.push_back(g.id);
+    if (seen_.insert(g.id).second) {
+      queue_.push_back(g.id);
+      foundIn_[g.id] = input.currentRegion;
+    }
 
   // The gateway last driven to, once traversed, names the region to complete.
   if (entering_ && std::none_of(open.begin(), open.end(), [&](const OpenGateway& g) { return g.id == *entering_; })) {
@@ -108,28 +112,47 @@ ExplorationGoal RgExploration::next(const ExplorationInput& input, const PathLen
   }
   completing_ = RegionId{};
 
-  // 2. The oldest open gateway that can be driven through; one that cannot leaves the queue. One
+  // 2. Breadth first: the gateways found from the region whose gateways were found first, the
+  // nearest of them by driving distance. One that cannot be driven through leaves the queue; one
+  // with no drive point candidate yet waits in it (ExplorationTargets.h). One
   // whose drive point the robot stands at was not reported traversed: counted as a failure (the
-  // kernel may lag, so it stays queued until it failed maxGoalFailures times).
-  for (auto it = queue_.begin(); it != queue_.end();) {
-    const auto g = std::find_if(open.begin(), open.end(), [&](const OpenGateway& o) { return o.id == *it; });
-    const auto point = drivePoint(*g, now.grid, config_.robotRadiusM, reach);
-    if (!point || (*point - robot).norm() <= kSameGoalM) {
-      if (!point || ++gatewayFailures_[*it] >= config_.maxGoalFailures) {
-        it = queue_.erase(it);
-      } else {
-        ++it;
-      }
-      continue;
+  // kernel may lag, so it stays queued until it failed maxGoalFailures times) and passed over.
+  std::vector<RegionId> levels;
+  for (const GatewayId id : queue_)
+    if (std::find(levels.begin(), levels.end(), foundIn_[id]) == levels.end()) levels.push_back(foundIn_[id]);
+  for (const RegionId level : levels) {
+    std::vector<const OpenGateway*> group;
+    std::vector<Eigen::Vector2d> points;
+    std::vector<GatewayId> dropped;
+    for (const GatewayId id : queue_) {
+      if (foundIn_[id] != level) continue;
+      const OpenGateway& g = *std::find_if(open.begin(), open.end(), [&](const OpenGateway& o) { return o.id == id; });
+      if (g.drivePoints.empty()) continue;  // no target yet; its frontier leads the robot to look
+      group.push_back(&g);
+      points.push_back(g.drivePoints.front());
     }
-    entering_ = *it;
-    enteringFrom_ = g->known;
-    enteringFar_ = g->far;
+    const auto best = reach.nearest(points, [&](std::size_t i) -> std::optional<Eigen::Vector2d> {
+      const auto point = drivePoint(*group[i], reach);
+      if (!point) {
+        dropped.push_back(group[i]->id);
+      } else if ((*point - robot).norm() <= kSameGoalM) {
+        if (++gatewayFailures_[group[i]->id] >= config_.maxGoalFailures) dropped.push_back(group[i]->id);
+        return std::nullopt;
+      }
+      return point;
+    });
+    std::erase_if(queue_, [&](GatewayId id) { return std::find(dropped.begin(), dropped.end(), id) != dropped.end(); });
+    if (!best) continue;
+    const OpenGateway& g = *group[best->index];
+    entering_ = g.id;
+    enteringFrom_ = g.known;
+    enteringFar_ = g.far;
     std::ostringstream reason;
-    reason << "no reachable frontier left in region " << input.currentRegion << ": through untraversed gateway " << *it;
-    if (!g->known.isNone()) reason << " of region " << g->known;
-    reason << " (" << queue_.size() << " queued) to " << text(*point);
-    return {ExplorationGoal::Kind::Gateway, *point, RegionId{}, *it, reason.str()};
+    reason.precision(3);
+    reason << "no reachable frontier left in region " << input.currentRegion << ": breadth first through untraversed gateway "
+           << g.id << " found from region " << level << " (nearest of " << group.size() << ", " << queue_.size()
+           << " queued) to " << text(best->goal) << ", " << best->lengthM << " m away";
+    return {ExplorationGoal::Kind::Gateway, best->goal, RegionId{}, g.id, reason.str()};
   }
 
   // 3. Frontiers left behind in other regions.
