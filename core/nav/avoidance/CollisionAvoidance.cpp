@@ -227,7 +227,9 @@ std::vector<Candidate> CollisionAvoidance::candidatesFrom(const PlanStart& start
 double CollisionAvoidance::movingGap(const TrajectoryChain& chain, const ObstacleClearance& moving) const {
   // The smallest footprint clearance to a moving obstacle plus the arc length where it occurs: a
   // person straight ahead at d counts d, one beside the chain further on counts its distance
-  // along the chain on top.
+  // along the chain on top. An empty chain (what is left of one the reference has all but
+  // passed) has nothing ahead.
+  if (chain.empty()) return std::numeric_limits<double>::infinity();
   double best = kMovingReachM;
   const double length = chain.length();
   for (double s = 0.0; s <= length && s < best; s += config_.sampleStepM)

@@ -5,7 +5,8 @@
 // just behind the wall it faces, keeps the target of a door it drove by (it turns back to it), and
 // gets away from a wall it braked into, drives again when stopped short of the goal, and passes a
 // person (a moving obstacle) slower than a post in the same place, and after 5 s held back by one
-// who stays, takes it for standing.
+// who stays, takes it for standing; and it decides when one planning latency ahead lies a hair
+// before its chain's end.
 #include <cppunit/extensions/HelperMacros.h>
 
 #include <cmath>
@@ -73,6 +74,7 @@ class CollisionAvoidanceTest : public CppUnit::TestFixture {
   CPPUNIT_TEST(drivesAgainWhenStoppedShortOfTheGoal);
   CPPUNIT_TEST(passesAWalkingPersonSlowly);
   CPPUNIT_TEST(takesAPersonWhoStaysForAStandingObstacle);
+  CPPUNIT_TEST(decidesWithTheReferenceAHairBeforeItsChainsEnd);
   CPPUNIT_TEST_SUITE_END();
 
  public:
@@ -253,6 +255,23 @@ class CollisionAvoidanceTest : public CppUnit::TestFixture {
   }
 
  private:
+  // One planning latency ahead the reference lies a hair (less than a nanometre) before the end
+  // of the chain: what is left of it slices to nothing, and the check of the speed for people
+  // ahead must take that as nothing ahead (it once asked the empty slice for a pose and threw,
+  // ending the exploration evaluation's run).
+  void decidesWithTheReferenceAHairBeforeItsChainsEnd() {
+    CollisionAvoidance cam({}, kJackal, limits_);
+    cam.setTargets(straightTargets(8.0));  // farther than a chain reaches: the first ends short of the goal
+    const AvoidanceDecision first = cam.update({0.0, {}, 0.0, 0.0}, std::span(&free_, 1));
+    CPPUNIT_ASSERT(first.chain);
+    PerfectRobot robot(limits_);
+    robot.drive(*first.chain, 0.0);
+    const double end = first.chain->startTime + TimedTrajectory(first.chain->chain, limits_).duration();
+    const RobotState nearEnd = robot.at(end - CollisionAvoidanceConfig{}.planningLatencyS - 1e-6);
+    const AvoidanceDecision next = cam.update(nearEnd, std::span(&free_, 1));
+    CPPUNIT_ASSERT(next.action != AvoidanceAction::Blocked);
+  }
+
   MotionLimits limits_;
   ObstacleGrid free_ = gridWith({}, 0.0);
 };

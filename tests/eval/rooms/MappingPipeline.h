@@ -61,6 +61,8 @@ class MappingPipeline {
   // The corrected pose of a scan taken in (NotAvailableError for an unknown ID).
   Pose2D correctedPose(DataId scanId) const;
   const RgMappingKernel& kernel() const { return kernel_; }
+  // For what a user asks of the map (naming regions); the chain runs in the caller's thread.
+  RgMappingKernel& kernel() { return kernel_; }
   const MappingCounts& counts() const { return counts_; }
 
  private:
