@@ -51,12 +51,14 @@ AvoidanceService::AvoidanceService(const CollisionAvoidanceConfig& config, const
       lld_(settings, options_.driveObject),
       planner_(settings, options_.plannerObject),
       obstacles_(config.obstacleMap),
+      frameSource_(options_.poseSource, settings,
+             {options_.truthObject, options_.scanMapperObject, options_.localizationObject, options_.laserObject},
+             health),
       drive_(loadCheckpoint(options_.checkpointFile)),
       retry_(health),
       follower_(health, "laser", [this] { return step(); }, [this] { return skipScan(); }) {
   validate(config_);
   validate(options_.footprint);
-  if (options_.poseSource == PoseSource::GroundTruth) truth_.emplace(settings, options_.truthObject);
   health_.set("resumed_drive", drive_.progress.active() ? 1 : 0);
 }
 
@@ -185,7 +187,9 @@ bool AvoidanceService::step() {
   const LaserScan& scan = batch.records.back();
   lastScan_ = scan.id;
   health_.add("scans", batch.records.size());
-  if (truth_) mapFromOdometry_ = mapFromOdometry(truth_->truePose(scan.id), scan.odometry);
+  frameSource_.refresh(batch.records);
+  if (!frameSource_.frame()) return true;  // where the robot stands in the map is not known yet
+  mapFromOdometry_ = *frameSource_.frame();
   const RobotState state = robotState();
 
   if (generation != appliedGeneration_) {  // a new drive (or a cancel): the core starts afresh

@@ -17,7 +17,8 @@
 // State survives: the drive is checkpointed (DriveCheckpoint.h) whenever it starts, gets a plan,
 // or ends, and resumed after a restart. Request IDs: a repeated driveTo/followTargets with the
 // drive's request answers its status and changes nothing.
-// Health: scans, chains_sent, chains_refused, plans, replans, doors_reported, drives.
+// The map frame comes from the pose source (MapFrameSource.h); a drive waits until it is known.
+// Health: scans, frame_refreshes, chains_sent, chains_refused, plans, replans, doors_reported, drives.
 #pragma once
 
 #include <chrono>
@@ -26,7 +27,6 @@
 #include <string>
 
 #include "clientlibs/base/BaseClient.h"
-#include "clientlibs/groundtruth/GroundTruthClient.h"
 #include "clientlibs/laser/LaserClient.h"
 #include "clientlibs/lowleveldrive/LowLevelDriveClient.h"
 #include "clientlibs/pathplanning/PathPlanningClient.h"
@@ -34,7 +34,7 @@
 #include "core/nav/avoidance/DriveProgress.h"
 #include "core/nav/avoidance/LaserObstacleMap.h"
 #include "servers/collisionavoidance/DriveCheckpoint.h"
-#include "servers/collisionavoidance/MapFrame.h"
+#include "servers/collisionavoidance/MapFrameSource.h"
 #include "servers/common/CheckpointRetry.h"
 #include "servers/common/InputFollower.h"
 #include "servers/common/ModuleHealth.h"
@@ -46,6 +46,8 @@ struct AvoidanceServiceOptions {
   std::string laserObject = "Laser";
   std::string baseObject = "Base";
   std::string truthObject = "GroundTruth";
+  std::string scanMapperObject = "ScanMapper";
+  std::string localizationObject = "Localization";
   std::string driveObject = "LowLevelDrive";
   std::string plannerObject = "PathPlanning";
   std::string checkpointFile;  // empty: no checkpoints
@@ -89,7 +91,6 @@ class AvoidanceService {
   ModuleHealth& health_;
   LaserClient laser_;
   BaseClient base_;
-  std::optional<GroundTruthClient> truth_;
   LowLevelDriveClient lld_;
   PathPlanningClient planner_;
 
@@ -103,7 +104,8 @@ class AvoidanceService {
   std::uint64_t appliedGeneration_ = 0;
   bool settled_ = false;    // the robot stood still once since the start
   bool following_ = false;  // reading scans (a drive is active)
-  Pose2D mapFromOdometry_;
+  MapFrameSource frameSource_;
+  Pose2D mapFromOdometry_;  // the frame's latest answer
   Pose2D targetsFrame_;   // mapFromOdometry_ when the core's targets were converted
   double targetsFrameStamp_ = 0.0;
   std::optional<PlanRecord> lastPlan_;
