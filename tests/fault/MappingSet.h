@@ -15,8 +15,8 @@ namespace rgnav::testing {
 // log: the CARMEN log to replay; models: trained gateway HMMs; speed: "x<k>" or "realtime".
 std::vector<ClusterModule> mappingSet(const std::string& log, const std::string& models, const std::string& speed);
 
-// The modules of config/sets/demo.yaml (the simulator's lock-step tour of the office floor and the
-// mapping chain), each restarted without limit; the kernel exports into the cluster's run
+// The modules of config/sets/demo-mapping.yaml (the simulator's lock-step tour of the office
+// floor and the mapping chain), each restarted without limit; the kernel exports into the cluster's run
 // directory instead of the project's out/.
 std::vector<ClusterModule> demoSet();
 
