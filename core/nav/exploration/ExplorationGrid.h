@@ -29,6 +29,10 @@ class ExplorationGrid {
 
   ExplorationCell at(int col, int row) const;  // Unknown outside the grid
   RegionId regionAt(int col, int row) const;   // none unless Free
+  // From the cell's centre to the nearest cell a line of the map passes through (OpenCV's exact
+  // Euclidean distance transform of the rendered lines): within one cell's half diagonal of the
+  // distance to the line itself. Infinite where the map has no line; 0 outside the grid.
+  double wallDistanceM(int col, int row) const;
   Eigen::Vector2d cellCenter(int col, int row) const;
   // The cell holding `point`; false if it lies outside the grid.
   bool cellOf(const Eigen::Vector2d& point, int& col, int& row) const;
@@ -40,6 +44,7 @@ class ExplorationGrid {
   int width_ = 0, height_ = 0;
   std::vector<ExplorationCell> cells_;  // row-major, row 0 at the bottom
   std::vector<RegionId> regions_;
+  std::vector<float> wallDistanceM_;  // row-major, metres
 };
 
 }  // namespace rgnav

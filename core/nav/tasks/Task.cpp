@@ -1,5 +1,7 @@
-// Names of task kinds and states (Task.h), as logs and rgnav-nav print them.
+// Names of task kinds, states and goals (Task.h), as logs and rgnav-nav print them.
 #include "core/nav/tasks/Task.h"
+
+#include <cstdio>
 
 namespace rgnav {
 
@@ -22,6 +24,20 @@ std::string toString(TaskState state) {
     case TaskState::Done: return "done";
   }
   return "unknown";
+}
+
+std::string describeGoal(const PlanGoal& goal) {
+  switch (goal.kind) {
+    case PlanGoal::Kind::Point: {
+      char text[64];
+      std::snprintf(text, sizeof text, "point %.2f %.2f", goal.point.x(), goal.point.y());
+      return text;
+    }
+    case PlanGoal::Kind::Region: return "region " + std::to_string(goal.region.value());
+    case PlanGoal::Kind::RegionName: return "region '" + goal.name + "'";
+    case PlanGoal::Kind::Object: return "object '" + goal.name + "'";
+  }
+  return "unknown goal";
 }
 
 bool ended(TaskState state) { return state != TaskState::Queued && state != TaskState::Active; }

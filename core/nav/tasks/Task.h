@@ -18,6 +18,8 @@ enum class TaskState { Queued, Active, Reached, Blocked, Cancelled, Done };
 
 std::string toString(TaskKind kind);
 std::string toString(TaskState state);
+// "point 1.50 -2.00", "region 3", "region 'kitchen'", "object 'closet'": for progress and logs.
+std::string describeGoal(const PlanGoal& goal);
 // Whether a task in `state` has ended (reached, blocked, cancelled, done).
 bool ended(TaskState state);
 

@@ -22,7 +22,8 @@ class TaskQueue {
  public:
   static constexpr std::size_t kKeptEnded = 100;
 
-  explicit TaskQueue(std::size_t keptEnded = kKeptEnded);
+  TaskQueue() = default;
+  explicit TaskQueue(std::size_t keptEnded);
   // A queue restored from a checkpoint: its tasks (by ID) and the ID the next task gets. Throws
   // InvalidArgumentError for tasks out of order, an ID at or beyond nextId, or two active tasks.
   TaskQueue(std::vector<Task> tasks, TaskId nextId, std::size_t keptEnded = kKeptEnded);
@@ -59,7 +60,7 @@ class TaskQueue {
   Task* activeTask();
   void forgetOldEnded();
 
-  std::size_t keptEnded_;
+  std::size_t keptEnded_ = kKeptEnded;
   std::deque<Task> tasks_;  // by ID
   TaskId nextId_ = 1;
 };
