@@ -168,9 +168,8 @@ bool HighLevelPlanningService::step() {
     std::lock_guard lock(mutex_);
     if (retry_.failing() && retry_.due()) checkpoint();
   }
-  const std::optional<Pose2D> robot = robotPose();
-  pollKernel(robot);
-  runTask(robot);
+  pollKernel();
+  runTask();
   return false;  // the loop runs every pollPeriodS
 }
 
@@ -185,7 +184,7 @@ std::optional<Pose2D> HighLevelPlanningService::robotPose() {
   }
 }
 
-void HighLevelPlanningService::pollKernel(const std::optional<Pose2D>& robot) {
+void HighLevelPlanningService::pollKernel() {
   try {
     summary_ = kernel_.summary();
     if (!regionsRevision_ || *regionsRevision_ != summary_.lastEvent || regionsCurrent_ != summary_.current) {
@@ -198,13 +197,16 @@ void HighLevelPlanningService::pollKernel(const std::optional<Pose2D>& robot) {
     health_.setError("kernel", e.what());
     return;
   }
-  Eigen::Vector2d where = Eigen::Vector2d::Zero();
-  if (robot) {
-    where = {robot->x, robot->y};
-  } else {
-    for (const RegionSummaryView& r : regions_)
-      if (r.id == summary_.current) where = {r.frame.x, r.frame.y};
+  bool ask = false;
+  {
+    std::lock_guard lock(mutex_);
+    ask = state_.dialog.wouldAsk(summary_.current, regions_);
   }
+  // Where the question is asked: the robot's pose, or without one the region frame's origin.
+  Eigen::Vector2d where = Eigen::Vector2d::Zero();
+  for (const RegionSummaryView& r : regions_)
+    if (r.id == summary_.current) where = {r.frame.x, r.frame.y};
+  if (const std::optional<Pose2D> robot = ask ? robotPose() : std::nullopt) where = {robot->x, robot->y};
   std::lock_guard lock(mutex_);
   const std::vector<NamingQuestion> before = state_.dialog.waiting();
   if (const auto asked = state_.dialog.observe(summary_.current, where, regions_)) {
@@ -214,7 +216,7 @@ void HighLevelPlanningService::pollKernel(const std::optional<Pose2D>& robot) {
   if (state_.dialog.waiting() != before) checkpoint();
 }
 
-void HighLevelPlanningService::runTask(const std::optional<Pose2D>& robot) {
+void HighLevelPlanningService::runTask() {
   bool cancelOwed = false;
   {
     std::lock_guard lock(mutex_);
@@ -240,7 +242,7 @@ void HighLevelPlanningService::runTask(const std::optional<Pose2D>& robot) {
   if (!active) return stopStrayDrive();
   strayChecked_ = true;
   if (active->kind == TaskKind::GoTo) runGoTo(*active);
-  if (active->kind == TaskKind::Explore) runExplore(*active, robot);
+  if (active->kind == TaskKind::Explore) runExplore(*active);
 }
 
 // Once after a start with no task active: a drive of an ended task the module may have left
@@ -298,7 +300,7 @@ void HighLevelPlanningService::applyDrive(const Task& task, const DriveProgress&
   }
 }
 
-void HighLevelPlanningService::runExplore(const Task& task, const std::optional<Pose2D>& robot) {
+void HighLevelPlanningService::runExplore(const Task& task) {
   if (explorerTask_ != task.id) {
     explorer_.emplace(makeExplorationStrategy(options_.strategy, config_.exploration), config_.exploration);
     explorerTask_ = task.id;
@@ -317,6 +319,7 @@ void HighLevelPlanningService::runExplore(const Task& task, const std::optional<
     return;
   }
   if (cache_.empty()) return progress(task, "exploring: waiting for the kernel's first region");
+  const std::optional<Pose2D> robot = robotPose();
   if (!robot) return progress(task, "exploring: waiting for the robot's pose (" + options_.poseSource + ")");
   const Pose2D start = *robot;
   const PathLength pathLength = [&](const Eigen::Vector2d& goal) -> std::optional<double> {

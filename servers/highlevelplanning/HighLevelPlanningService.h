@@ -82,12 +82,12 @@ class HighLevelPlanningService {
 
  private:
   bool step();
-  void pollKernel(const std::optional<Pose2D>& robot);
-  std::optional<Pose2D> robotPose();
-  void runTask(const std::optional<Pose2D>& robot);
+  void pollKernel();
+  std::optional<Pose2D> robotPose();  // fetched only where needed: the source may be away
+  void runTask();
   void stopStrayDrive();
   void runGoTo(const Task& task);
-  void runExplore(const Task& task, const std::optional<Pose2D>& robot);
+  void runExplore(const Task& task);
   // A new drive for the active task `task` to `goal`: its request ID checkpointed, then asked for.
   DriveProgress startDrive(const Task& task, const PlanGoal& goal, const std::string& progress);
   // The drive's state as the active task's outcome or progress (nothing if `task` is no longer

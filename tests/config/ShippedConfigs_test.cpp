@@ -17,6 +17,7 @@
 #include "core/nav/localization/MclConfigYaml.h"
 #include "core/nav/motion/LowLevelDriveConfigYaml.h"
 #include "core/nav/planning/RoutePlannerConfigYaml.h"
+#include "core/nav/tasks/HighLevelPlanningConfigYaml.h"
 #include "core/rgmap/kernel/RgMappingKernelConfigYaml.h"
 #include "core/sim/LoadedWorld.h"
 #include "core/sim/SimulationConfigYaml.h"
@@ -53,7 +54,8 @@ const std::map<std::string, ModuleFile>& moduleFiles() {
       {"pathplanning", moduleFile(&parseRoutePlannerConfig)},
       {"lowleveldrive", moduleFile(&parseLowLevelDriveConfig)},
       {"collisionavoidance", moduleFile(&parseCollisionAvoidanceConfig)},
-      {"localization", moduleFile(&parseMclConfig)}};
+      {"localization", moduleFile(&parseMclConfig)},
+      {"highlevelplanning", moduleFile(&parseHighLevelPlanningConfig)}};
   return files;
 }
 

@@ -12,14 +12,23 @@ namespace rgnav {
 NamingDialog::NamingDialog(std::vector<NamingQuestion> waiting, std::set<RegionId> asked, QuestionId nextId)
     : waiting_(std::move(waiting)), asked_(std::move(asked)), nextId_(nextId) {}
 
+namespace {
+
+bool unnamed(RegionId id, const std::vector<RegionSummaryView>& regions) {
+  auto it = std::find_if(regions.begin(), regions.end(), [&](const RegionSummaryView& r) { return r.id == id; });
+  return it != regions.end() && it->name.empty();
+}
+
+}  // namespace
+
+bool NamingDialog::wouldAsk(RegionId current, const std::vector<RegionSummaryView>& regions) const {
+  return !current.isNone() && !asked_.count(current) && unnamed(current, regions);
+}
+
 std::optional<NamingQuestion> NamingDialog::observe(RegionId current, const Eigen::Vector2d& where,
                                                     const std::vector<RegionSummaryView>& regions) {
-  auto unnamed = [&](RegionId id) {
-    auto it = std::find_if(regions.begin(), regions.end(), [&](const RegionSummaryView& r) { return r.id == id; });
-    return it != regions.end() && it->name.empty();
-  };
-  std::erase_if(waiting_, [&](const NamingQuestion& q) { return !unnamed(q.region); });
-  if (current.isNone() || asked_.count(current) || !unnamed(current)) return std::nullopt;
+  std::erase_if(waiting_, [&](const NamingQuestion& q) { return !unnamed(q.region, regions); });
+  if (!wouldAsk(current, regions)) return std::nullopt;
   asked_.insert(current);
   char text[96];
   std::snprintf(text, sizeof text, "name this region? (region %llu, robot at %.1f %.1f)",

@@ -31,6 +31,9 @@ class NamingDialog {
   // asks about `current` if it has no name and was not asked about. Answers the new question.
   std::optional<NamingQuestion> observe(RegionId current, const Eigen::Vector2d& where,
                                         const std::vector<RegionSummaryView>& regions);
+  // Whether observe() would ask about `current` now (so the caller fetches the robot's pose only
+  // then).
+  bool wouldAsk(RegionId current, const std::vector<RegionSummaryView>& regions) const;
   // The question waiting with `id`; NotAvailableError if none waits (answered, dropped, unknown).
   const NamingQuestion& question(QuestionId id) const;
   // The question's region was named: the question is answered and leaves the queue.

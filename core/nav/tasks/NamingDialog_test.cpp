@@ -34,6 +34,7 @@ class NamingDialogTest : public CppUnit::TestFixture {
     CPPUNIT_ASSERT(!dialog.observe(RegionId{}, {0, 0}, map));           // in no region
     CPPUNIT_ASSERT(!dialog.observe(RegionId(2), {0, 0}, map));          // named already
     CPPUNIT_ASSERT(!dialog.observe(RegionId(7), {0, 0}, map));          // not in the list
+    CPPUNIT_ASSERT(dialog.wouldAsk(RegionId(1), map));
     const auto asked = dialog.observe(RegionId(1), {1.5, -2.0}, map);
     CPPUNIT_ASSERT(asked);
     CPPUNIT_ASSERT_EQUAL(QuestionId{1}, asked->id);
@@ -41,6 +42,7 @@ class NamingDialogTest : public CppUnit::TestFixture {
     CPPUNIT_ASSERT_EQUAL(1.5, asked->where.x());
     CPPUNIT_ASSERT(asked->text.find("name this region?") != std::string::npos);
     CPPUNIT_ASSERT(!dialog.observe(RegionId(1), {2.0, -2.0}, map));     // asked already
+    CPPUNIT_ASSERT(!dialog.wouldAsk(RegionId(1), map));
     CPPUNIT_ASSERT_EQUAL(std::size_t{1}, dialog.waiting().size());
   }
 
