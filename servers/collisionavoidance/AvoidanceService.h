@@ -8,7 +8,10 @@
 // plan: if the robot stands near a gateway crossing of its plan, the gateway is reported as a
 // blocked door first (replanDoorBlocked: its learned cost rises, thesis 5.4; a gateway that is no
 // door is refused by the planner and just planned around), then the goal is planned again from
-// where the robot stands. Given targets that are blocked end the drive failed.
+// where the robot stands. A drive found blocked five times in a row within half a metre of where
+// it was blocked before fails (its plans lead nowhere, e.g. to a goal beside furniture the map
+// does not hold; the caller chooses another goal). Given targets that are blocked end the drive
+// failed.
 // Safety in motion (DESIGN.md): every chain ends at a standstill the core checked, so a killed
 // module leaves the Low-Level Drive to finish or stop its chain; a restarted module first brakes
 // the robot to a standstill (LowLevelDrive::stop) before it plans from where it stands. Chain IDs
@@ -110,6 +113,8 @@ class AvoidanceService {
   double targetsFrameStamp_ = 0.0;
   std::optional<PlanRecord> lastPlan_;
   std::optional<Pose2D> blockedAt_;  // map frame: where the way was found blocked
+  std::optional<Pose2D> lastBlock_;  // ... the last time, kept over plans
+  std::uint32_t blocksInPlace_ = 0;  // blocks in a row near each other
 
   std::mutex mutex_;  // guards what follows (servant threads and the follower)
   DriveRecord drive_;

@@ -30,10 +30,8 @@ void DemoUser::answerWaiting() {
     } catch (const NotAvailableError&) {
       continue;  // answered meanwhile, or its region merged away: the name waits for the next question
     }
-    std::printf("demo: %4.0f s question %llu %s about region %llu at (%.1f, %.1f): %s\n", seconds(),
-                static_cast<unsigned long long>(q.id), quotedText(q.text).c_str(),
-                static_cast<unsigned long long>(q.region.value()), q.where.x(), q.where.y(),
-                quotedText(names_[next_]).c_str());
+    std::printf("demo: %4.0f s question %llu %s: the user answers %s\n", seconds(),
+                static_cast<unsigned long long>(q.id), quotedText(q.text).c_str(), quotedText(names_[next_]).c_str());
     std::fflush(stdout);
     ++next_;
   }
