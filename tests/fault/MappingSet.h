@@ -19,6 +19,8 @@ std::vector<ClusterModule> mappingSet(const std::string& log, const std::string&
 // floor and the mapping chain), each restarted without limit; the kernel exports into the cluster's run
 // directory instead of the project's out/.
 std::vector<ClusterModule> demoSet();
+// The modules of a shipped set (`relative` below config/, e.g. "sets/demo.yaml") in the same way.
+std::vector<ClusterModule> shippedSetModules(const std::string& relative);
 
 // Waits until the kernel has taken in the whole log; throws std::runtime_error after limitSeconds.
 void waitForEndOfMap(TestCluster& cluster, double limitSeconds);
