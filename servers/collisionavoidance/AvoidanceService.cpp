@@ -16,6 +16,11 @@ namespace {
 constexpr std::uint32_t kScanBatch = 50;
 constexpr double kStandingSpeed = 0.02;    // m/s: the robot stands
 constexpr double kDoorNearM = 1.5;         // blocked this near a gateway crossing of the plan: that door
+// A drive to a goal found blocked this often in a row, each time within kStuckM of where it was
+// blocked before, fails: the new plans from there lead nowhere (a goal too close to furniture the
+// map does not hold, say), and the caller may choose another goal instead of waiting for ever.
+constexpr std::uint32_t kMaxBlocksInPlace = 5;
+constexpr double kStuckM = 0.5;
 // The targets follow the odometry's drift against the map frame (new targets make the core plan
 // anew), checked this often, once the drift exceeds these, and only while the goal is farther
 // than kFrameSettledM along the targets: near the goal a changed goal would come too late to
@@ -51,12 +56,14 @@ AvoidanceService::AvoidanceService(const CollisionAvoidanceConfig& config, const
       lld_(settings, options_.driveObject),
       planner_(settings, options_.plannerObject),
       obstacles_(config.obstacleMap),
+      frameSource_(options_.poseSource, settings,
+             {options_.truthObject, options_.scanMapperObject, options_.localizationObject, options_.laserObject},
+             health),
       drive_(loadCheckpoint(options_.checkpointFile)),
       retry_(health),
       follower_(health, "laser", [this] { return step(); }, [this] { return skipScan(); }) {
   validate(config_);
   validate(options_.footprint);
-  if (options_.poseSource == PoseSource::GroundTruth) truth_.emplace(settings, options_.truthObject);
   health_.set("resumed_drive", drive_.progress.active() ? 1 : 0);
 }
 
@@ -185,13 +192,17 @@ bool AvoidanceService::step() {
   const LaserScan& scan = batch.records.back();
   lastScan_ = scan.id;
   health_.add("scans", batch.records.size());
-  if (truth_) mapFromOdometry_ = mapFromOdometry(truth_->truePose(scan.id), scan.odometry);
+  frameSource_.refresh(batch.records);
+  if (!frameSource_.frame()) return true;  // where the robot stands in the map is not known yet
+  mapFromOdometry_ = *frameSource_.frame();
   const RobotState state = robotState();
 
   if (generation != appliedGeneration_) {  // a new drive (or a cancel): the core starts afresh
     appliedGeneration_ = generation;
     lastPlan_.reset();
     blockedAt_.reset();
+    lastBlock_.reset();
+    blocksInPlace_ = 0;
     std::vector<TargetPose> rest;
     if (drive.progress.phase == DrivePhase::Driving)
       rest.assign(drive.targets.begin() + drive.progress.targetIndex, drive.targets.end());
@@ -302,6 +313,14 @@ void AvoidanceService::decide(const DriveRecord& drive, std::uint64_t generation
         break;
       }
       blockedAt_ = toMap(mapFromOdometry_, state.pose);
+      blocksInPlace_ = lastBlock_ && distance(*lastBlock_, *blockedAt_) < kStuckM ? blocksInPlace_ + 1 : 1;
+      lastBlock_ = blockedAt_;
+      if (blocksInPlace_ >= kMaxBlocksInPlace) {
+        record(generation, DrivePhase::Failed,
+               "blocked: " + std::to_string(blocksInPlace_) + " plans in a row found no way on from here (" +
+                   decision.reason + ")");
+        break;
+      }
       {
         std::lock_guard lock(mutex_);
         if (current(generation)) ++drive_.progress.replans;

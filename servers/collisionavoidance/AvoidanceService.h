@@ -8,7 +8,10 @@
 // plan: if the robot stands near a gateway crossing of its plan, the gateway is reported as a
 // blocked door first (replanDoorBlocked: its learned cost rises, thesis 5.4; a gateway that is no
 // door is refused by the planner and just planned around), then the goal is planned again from
-// where the robot stands. Given targets that are blocked end the drive failed.
+// where the robot stands. A drive found blocked five times in a row within half a metre of where
+// it was blocked before fails (its plans lead nowhere, e.g. to a goal beside furniture the map
+// does not hold; the caller chooses another goal). Given targets that are blocked end the drive
+// failed.
 // Safety in motion (DESIGN.md): every chain ends at a standstill the core checked, so a killed
 // module leaves the Low-Level Drive to finish or stop its chain; a restarted module first brakes
 // the robot to a standstill (LowLevelDrive::stop) before it plans from where it stands. Chain IDs
@@ -17,7 +20,8 @@
 // State survives: the drive is checkpointed (DriveCheckpoint.h) whenever it starts, gets a plan,
 // or ends, and resumed after a restart. Request IDs: a repeated driveTo/followTargets with the
 // drive's request answers its status and changes nothing.
-// Health: scans, chains_sent, chains_refused, plans, replans, doors_reported, drives.
+// The map frame comes from the pose source (MapFrameSource.h); a drive waits until it is known.
+// Health: scans, frame_refreshes, chains_sent, chains_refused, plans, replans, doors_reported, drives.
 #pragma once
 
 #include <chrono>
@@ -26,7 +30,6 @@
 #include <string>
 
 #include "clientlibs/base/BaseClient.h"
-#include "clientlibs/groundtruth/GroundTruthClient.h"
 #include "clientlibs/laser/LaserClient.h"
 #include "clientlibs/lowleveldrive/LowLevelDriveClient.h"
 #include "clientlibs/pathplanning/PathPlanningClient.h"
@@ -34,7 +37,7 @@
 #include "core/nav/avoidance/DriveProgress.h"
 #include "core/nav/avoidance/LaserObstacleMap.h"
 #include "servers/collisionavoidance/DriveCheckpoint.h"
-#include "servers/collisionavoidance/MapFrame.h"
+#include "servers/collisionavoidance/MapFrameSource.h"
 #include "servers/common/CheckpointRetry.h"
 #include "servers/common/InputFollower.h"
 #include "servers/common/ModuleHealth.h"
@@ -46,6 +49,8 @@ struct AvoidanceServiceOptions {
   std::string laserObject = "Laser";
   std::string baseObject = "Base";
   std::string truthObject = "GroundTruth";
+  std::string scanMapperObject = "ScanMapper";
+  std::string localizationObject = "Localization";
   std::string driveObject = "LowLevelDrive";
   std::string plannerObject = "PathPlanning";
   std::string checkpointFile;  // empty: no checkpoints
@@ -89,7 +94,6 @@ class AvoidanceService {
   ModuleHealth& health_;
   LaserClient laser_;
   BaseClient base_;
-  std::optional<GroundTruthClient> truth_;
   LowLevelDriveClient lld_;
   PathPlanningClient planner_;
 
@@ -103,11 +107,14 @@ class AvoidanceService {
   std::uint64_t appliedGeneration_ = 0;
   bool settled_ = false;    // the robot stood still once since the start
   bool following_ = false;  // reading scans (a drive is active)
-  Pose2D mapFromOdometry_;
+  MapFrameSource frameSource_;
+  Pose2D mapFromOdometry_;  // the frame's latest answer
   Pose2D targetsFrame_;   // mapFromOdometry_ when the core's targets were converted
   double targetsFrameStamp_ = 0.0;
   std::optional<PlanRecord> lastPlan_;
   std::optional<Pose2D> blockedAt_;  // map frame: where the way was found blocked
+  std::optional<Pose2D> lastBlock_;  // ... the last time, kept over plans
+  std::uint32_t blocksInPlace_ = 0;  // blocks in a row near each other
 
   std::mutex mutex_;  // guards what follows (servant threads and the follower)
   DriveRecord drive_;

@@ -8,7 +8,9 @@ namespace rgnav {
 PoseSource parsePoseSource(const std::string& text) {
   if (text == "odometry") return PoseSource::Odometry;
   if (text == "groundtruth") return PoseSource::GroundTruth;
-  throw ConfigError("--pose-source is odometry or groundtruth, not '" + text + "'");
+  if (text == "scanmapper") return PoseSource::ScanMapper;
+  if (text == "localization") return PoseSource::Localization;
+  throw ConfigError("--pose-source is odometry, groundtruth, scanmapper or localization, not '" + text + "'");
 }
 
 }  // namespace rgnav

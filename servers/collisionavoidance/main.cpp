@@ -31,11 +31,15 @@ int main(int argc, char** argv) {
   options.add_options()
       ("config", po::value(&configFile)->required(), "module parameters (config/modules/collisionavoidance.yaml)")
       ("pose-source", po::value(&poseSource)->default_value("odometry"),
-       "odometry (map frame = odometry frame) or groundtruth (the simulator's true pose; evaluations)")
+       "odometry (map frame = odometry frame), groundtruth (the simulator's true pose; evaluations), scanmapper "
+       "(the ScanMapper's corrected poses: while mapping) or localization (the Localization module's estimate: a known map)")
       ("footprint", po::value(&footprint)->default_value("disk:0.25"), "the robot's outline: disk:R or rectangle:L,W[,OFFSET]")
       ("laser-object", po::value(&serviceOptions.laserObject)->default_value("Laser"), "Laser module to follow")
       ("base-object", po::value(&serviceOptions.baseObject)->default_value("Base"), "Base module for odometry")
       ("truth-object", po::value(&serviceOptions.truthObject)->default_value("GroundTruth"), "GroundTruth (pose source groundtruth)")
+      ("scanmapper-object", po::value(&serviceOptions.scanMapperObject)->default_value("ScanMapper"), "ScanMapper (pose source scanmapper)")
+      ("localization-object", po::value(&serviceOptions.localizationObject)->default_value("Localization"),
+       "Localization (pose source localization)")
       ("drive-object", po::value(&serviceOptions.driveObject)->default_value("LowLevelDrive"), "Low-Level Drive to send chains to")
       ("planner-object", po::value(&serviceOptions.plannerObject)->default_value("PathPlanning"), "PathPlanning module to ask for plans")
       ("object", po::value(&objectName)->default_value("CollisionAvoidance"), "object name of the interface")

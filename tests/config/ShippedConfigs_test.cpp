@@ -24,6 +24,7 @@
 #include "core/slam/SlamConfigYaml.h"
 #include "core/supervision/SetConfig.h"
 #include "tests/eval/split/IpaSplit.h"
+#include "tools/demo/DemoScript.h"
 
 namespace fs = std::filesystem;
 using namespace rgnav;
@@ -90,6 +91,8 @@ bool loadShipped(const fs::path& file) {
     loadWorld(file.string());
   } else if (folder == "gateways" && extension == ".txt") {
     loadHmmModels(file.string());
+  } else if (folder == "demo" && (file.filename() == "answers.yaml" || file.filename() == "tasks.yaml")) {
+    loadDemoScript((file.parent_path() / "answers.yaml").string(), (file.parent_path() / "tasks.yaml").string());
   } else if (folder == "eval" && file.filename() == "ipa-split.yaml") {
     loadIpaSplit(file.string());
   } else {

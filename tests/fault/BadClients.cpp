@@ -1,5 +1,5 @@
 // rgnav-faulttest-badclients (`rgctl faulttest badclients`): every server of the demo set survives
-// every input a remote caller can give it. The demo set (config/sets/demo.yaml: the simulator's
+// every input a remote caller can give it. The mapping demo's set (config/sets/demo-mapping.yaml: the simulator's
 // lock-step tour of the office floor -> ScanMapper -> GatewayDetection -> RG Mapping Kernel; with
 // --log, a log playback instead of the simulator) maps twice: once undisturbed, once while
 // `--threads` hostile clients (HostileClient.h) call every operation of every server, the watchdog

@@ -44,8 +44,10 @@ void waitForEndOfMap(TestCluster& cluster, double limitSeconds) {
   }
 }
 
-std::vector<ClusterModule> demoSet() {
-  const std::string setFile = shippedConfigFile("sets/demo.yaml");
+std::vector<ClusterModule> demoSet() { return shippedSetModules("sets/demo-mapping.yaml"); }
+
+std::vector<ClusterModule> shippedSetModules(const std::string& relative) {
+  const std::string setFile = shippedConfigFile(relative);
   const std::string root = fs::path(setFile).parent_path().parent_path().parent_path().string();
   const SetConfig set = loadSetConfig(setFile, {{"RGNAV_BIN", fs::path(TestCluster::program("rgnav-sim")).parent_path().string()}, {"RGNAV_ROOT", root}}, root);
   std::vector<ClusterModule> modules;

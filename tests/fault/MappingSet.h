@@ -15,10 +15,12 @@ namespace rgnav::testing {
 // log: the CARMEN log to replay; models: trained gateway HMMs; speed: "x<k>" or "realtime".
 std::vector<ClusterModule> mappingSet(const std::string& log, const std::string& models, const std::string& speed);
 
-// The modules of config/sets/demo.yaml (the simulator's lock-step tour of the office floor and the
-// mapping chain), each restarted without limit; the kernel exports into the cluster's run
+// The modules of config/sets/demo-mapping.yaml (the simulator's lock-step tour of the office
+// floor and the mapping chain), each restarted without limit; the kernel exports into the cluster's run
 // directory instead of the project's out/.
 std::vector<ClusterModule> demoSet();
+// The modules of a shipped set (`relative` below config/, e.g. "sets/demo.yaml") in the same way.
+std::vector<ClusterModule> shippedSetModules(const std::string& relative);
 
 // Waits until the kernel has taken in the whole log; throws std::runtime_error after limitSeconds.
 void waitForEndOfMap(TestCluster& cluster, double limitSeconds);

@@ -3,7 +3,7 @@
 // omniNames and watchdog; everything ended by PID afterwards) runs the Simulator module on the
 // floor plan, driving its room tour in lock-step with its consumers, the ScanMapper, the
 // GatewayDetection module (with the HMM file, if any) and the RG Mapping Kernel module, each with
-// its own defaults, as `rgctl demo` runs them. When the kernel has taken in the last scan, the
+// its own defaults, as `rgctl demo mapping` runs them. When the kernel has taken in the last scan, the
 // final map is read through the kernel's client library (FinalMap.h: the same views the in-process
 // run builds), the corrected poses through the ScanMapper's and the true poses through the
 // simulator's GroundTruth object (evaluation only).
