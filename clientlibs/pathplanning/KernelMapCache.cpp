@@ -24,7 +24,7 @@ std::vector<RgMapEvent> eventsBetween(RgMappingKernelClient& kernel, RgMapEventI
 
 bool KernelMapCache::refresh() {
   const MapSummaryView summary = kernel_.summary();
-  if (filled_ && summary.lastEvent == revision_) return false;
+  if (filled_ && summary.lastEvent == revision_ && summary.lastScan == lastScan_) return false;
   RegionChanges changes;
   if (filled_ && summary.lastEvent > revision_) {
     changes = regionChanges(eventsBetween(kernel_, revision_, summary.lastEvent));
@@ -49,6 +49,7 @@ bool KernelMapCache::refresh() {
   gateways_ = kernel_.gateways();
   graph_ = kernel_.graph();
   revision_ = summary.lastEvent;
+  lastScan_ = summary.lastScan;
   filled_ = true;
   return true;
 }

@@ -5,8 +5,9 @@
 // summary while the revision stays; when it changed, it fetches the region list, the gateways and
 // the graph, and again only the regions that are new, whose summary changed, or that an event
 // since the cached revision names (RegionChanges.h); all of them when the revision went back (a
-// kernel restored from an older checkpoint). Scans stacked into the current region are no event:
-// the planner sees them at the kernel's next event.
+// kernel restored from an older checkpoint). Scans stacked into the current region are no event,
+// but they grow its freespace (the way on that an exploring robot needs): a summary whose last
+// scan moved fetches the regions whose summary changed (the current one) again.
 #pragma once
 
 #include <cstddef>
@@ -21,7 +22,7 @@ class KernelMapCache {
  public:
   explicit KernelMapCache(RgMappingKernelClient& kernel) : kernel_(kernel) {}
 
-  // Brings the copy up to the kernel's revision; true if it changed. Throws what the client
+  // Brings the copy up to the kernel's revision and last scan; true if it changed. Throws what the client
   // throws (ModuleUnavailableError when the kernel does not answer).
   bool refresh();
   // The copy as of the last refresh (regions in ascending ID).
@@ -35,6 +36,7 @@ class KernelMapCache {
   RgMappingKernelClient& kernel_;
   bool filled_ = false;
   RgMapEventId revision_ = 0;
+  DataId lastScan_ = 0;
   std::map<RegionId, RegionView> regions_;
   std::vector<GatewayView> gateways_;
   GraphView graph_;

@@ -99,24 +99,28 @@ RoutePlanner::RoutePlanner(const RoutePlannerConfig& config) : config_(config) {
 
 void RoutePlanner::setMap(PlanningMap map) {
   // The map revision is the change marker the kernel gives: a new revision rebuilds the region
-  // grids as they are planned on next; the same revision keeps them.
-  const bool same = map.revision == map_.revision;
-  map_ = std::move(map);
-  if (!same) {
+  // grids as they are planned on next. The same revision keeps the grids of the regions whose
+  // summary is unchanged; scans stacked into the current region change its summary (and its
+  // freespace) without a kernel event, so its grid, and the route graph over the regions' free
+  // cells, are built anew.
+  if (map.revision != map_.revision) {
+    map_ = std::move(map);
     regions_.clear();
     routeGraph_.reset();
     return;
   }
   for (auto it = regions_.begin(); it != regions_.end();) {
-    const auto view = std::find_if(map_.regions.begin(), map_.regions.end(),
+    const auto view = std::find_if(map.regions.begin(), map.regions.end(),
                                    [&](const RegionView& r) { return r.summary.id == it->first; });
-    if (view == map_.regions.end()) {
+    if (view == map.regions.end() || !(view->summary == it->second->view->summary)) {
       it = regions_.erase(it);
+      routeGraph_.reset();
     } else {
-      it->second->view = &*view;
+      it->second->view = &*view;  // the vector's elements stay where they are when it moves below
       ++it;
     }
   }
+  map_ = std::move(map);
 }
 
 RoutePlanner::RegionEntry& RoutePlanner::entry(RegionId region) const {

@@ -96,7 +96,8 @@ class RoutePlanner {
   // Throws ConfigError for a bad configuration.
   explicit RoutePlanner(const RoutePlannerConfig& config = {});
 
-  // Replaces the map; region grids of an unchanged revision are kept.
+  // Replaces the map; region grids of an unchanged revision are kept for the regions whose summary
+  // is unchanged (scans stacked into the current region are no new revision).
   void setMap(PlanningMap map);
   const PlanningMap& map() const { return map_; }
 

@@ -29,6 +29,7 @@ using rgnav::RoutePlanner;
 class RoutePlannerTest : public CppUnit::TestFixture {
   CPPUNIT_TEST_SUITE(RoutePlannerTest);
   CPPUNIT_TEST(aRouteIntoARoomPassesItsDoor);
+  CPPUNIT_TEST(freespaceStackedWithoutAnEventIsPlannedOn);
   CPPUNIT_TEST(goalsByRegionAndByName);
   CPPUNIT_TEST(anObjectGoalFacesTheObject);
   CPPUNIT_TEST(badGoalsAndStartsAreTypedNoPath);
@@ -146,6 +147,34 @@ class RoutePlannerTest : public CppUnit::TestFixture {
     CPPUNIT_ASSERT(plan.goalRegion == before.goalRegion);
     CPPUNIT_ASSERT(std::any_of(plan.route.begin(), plan.route.end(), [&](const auto& n) { return n.gateway == door; }));
     CPPUNIT_ASSERT_DOUBLES_EQUAL(before.lengthM, plan.lengthM, 0.5);
+  }
+
+  // Scans stacked into the current region grow its freespace without a kernel event: the map comes
+  // with the same revision and a changed region summary, and the planner plans on the new freespace
+  // instead of the grid it built before.
+  void freespaceStackedWithoutAnEventIsPlannedOn() {
+    const Vector2d goal(9.0, 4.5);
+    rgnav::PlanningMap full = rgnav::planningMapOf(*kernel_);
+    const std::vector<rgnav::RegionId> at = planner_.regionsAt(goal);
+    CPPUNIT_ASSERT(!at.empty());
+    rgnav::PlanningMap cut = full;
+    for (rgnav::RegionView& region : cut.regions) {
+      if (region.summary.id != at.front()) continue;
+      const rgnav::FreespaceBitmap& had = region.freespace;
+      rgnav::FreespaceBitmap less =
+          rgnav::FreespaceBitmap::allOccupied(had.resolutionM, had.originM, had.width, had.height);
+      for (int row = 0; row < had.height; ++row)
+        for (int col = 0; col < had.width; ++col)
+          if (had.isFree(col, row) &&
+              (rgnav::transformPoint(region.summary.frame, had.cellCenter(col, row)) - goal).norm() > 1.5)
+            less.setFree(col, row);
+      region.freespace = less;
+      region.summary.scans -= 1;  // the scan that saw the rest is not stacked yet
+    }
+    planner_.setMap(cut);
+    CPPUNIT_ASSERT_THROW(planner_.plan({1.0, 1.0, 0.0}, PlanGoal::at(goal)), rgnav::NoPathError);
+    planner_.setMap(full);  // the same revision
+    CPPUNIT_ASSERT(planner_.plan({1.0, 1.0, 0.0}, PlanGoal::at(goal)).lengthM > 0.0);
   }
 
   // A detected gateway no region has taken in yet, with its crossing points in the two rooms on
