@@ -47,7 +47,7 @@ namespace {
 
 struct Options {
   std::string world, answers, tasks, out, name = "demo";
-  int exploreLimitS = 3600, taskLimitS = 600, startLimitS = 60;
+  int exploreLimitS = 1200, taskLimitS = 600, startLimitS = 60;
 };
 
 // The robot's first corrected pose (map frame) and where the world frame lies in the map's.
