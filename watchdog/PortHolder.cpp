@@ -102,6 +102,12 @@ bool groupListensOn(pid_t leader, int port) {
   return false;
 }
 
+bool PortOwnership::heldBy(pid_t leader) {
+  if (leader != 0 && leader == verified_) return true;
+  verified_ = groupListensOn(leader, port_) ? leader : 0;
+  return verified_ != 0;
+}
+
 std::string commandLineOf(pid_t pid) {
   std::string text = readProcFile(pid, "cmdline");
   while (!text.empty() && text.back() == '\0') text.pop_back();

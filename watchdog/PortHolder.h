@@ -26,6 +26,23 @@ std::optional<PortHolder> findPortHolder(const HostPort& endpoint);
 // listens on `port`, at any local address.
 bool groupListensOn(pid_t leader, int port);
 
+// Whether a module's process group listens on the module's port, read from /proc once per
+// process: a module keeps its listening socket for its life, and reading /proc/net/tcp and every
+// process's fds at every heartbeat cost the watchdog a third of a core on a host with many
+// sockets. forget() (after a missed ping) makes the next call read /proc again. One module's
+// pings call it from one thread; it is not for sharing between threads.
+class PortOwnership {
+ public:
+  explicit PortOwnership(int port) : port_(port) {}
+  // groupListensOn(leader, port), taken from the last call that found it true for `leader`.
+  bool heldBy(pid_t leader);
+  void forget() { verified_ = 0; }
+
+ private:
+  int port_;
+  pid_t verified_ = 0;
+};
+
 // The command line of a process, its arguments joined by spaces; empty if it is gone.
 std::string commandLineOf(pid_t pid);
 

@@ -1,11 +1,13 @@
 // Tests finding a port's holder from /proc: a socket this test listens on names this process
 // and its command line; a port nobody listens on has no holder; a process group listens on a port
-// only if one of its processes does; a socket at another loopback address is another host's.
+// only if one of its processes does; a socket at another loopback address is another host's; a
+// module's ownership of its port is read once per process, and again after it is forgotten.
 #include <cppunit/extensions/HelperMacros.h>
 #include <netinet/in.h>
 #include <sys/socket.h>
 #include <unistd.h>
 
+#include <optional>
 #include <stdexcept>
 
 #include "watchdog/PortHolder.h"
@@ -38,6 +40,7 @@ class PortHolderTest : public CppUnit::TestFixture {
   CPPUNIT_TEST_SUITE(PortHolderTest);
   CPPUNIT_TEST(listeningSocketNamesThisProcess);
   CPPUNIT_TEST(boundButNotListeningHasNoHolder);
+  CPPUNIT_TEST(ownershipIsReadOncePerProcess);
   CPPUNIT_TEST_SUITE_END();
 
  public:
@@ -58,6 +61,17 @@ class PortHolderTest : public CppUnit::TestFixture {
     LoopbackSocket socket(false);
     CPPUNIT_ASSERT(!rgnav::findPortHolder({"127.0.0.1", socket.port}));
     CPPUNIT_ASSERT(!rgnav::groupListensOn(::getpid(), socket.port));
+  }
+
+  void ownershipIsReadOncePerProcess() {
+    std::optional<LoopbackSocket> socket(std::in_place, true);
+    rgnav::PortOwnership owner(socket->port);
+    CPPUNIT_ASSERT(!owner.heldBy(::getppid()));
+    CPPUNIT_ASSERT(owner.heldBy(::getpid()));
+    socket.reset();  // the socket closes: the process's ownership stands until forgotten
+    CPPUNIT_ASSERT(owner.heldBy(::getpid()));
+    owner.forget();
+    CPPUNIT_ASSERT(!owner.heldBy(::getpid()));
   }
 };
 

@@ -72,8 +72,13 @@ int main(int argc, char** argv) {
             auto probe = std::make_shared<rgnav::CorbaPing>(runtime.orb(), at, module.objects.front(), timeout);
             // Only the process this watchdog started counts: after a port clash the answer would
             // come from somebody else's process.
-            return rgnav::PingThreads::Ping(
-                [probe, port = at.port](pid_t pid) { return rgnav::groupListensOn(pid, port) && probe->answers(); });
+            auto owner = std::make_shared<rgnav::PortOwnership>(at.port);
+            return rgnav::PingThreads::Ping([probe, owner](pid_t pid) {
+              if (!owner->heldBy(pid)) return false;
+              if (probe->answers()) return true;
+              owner->forget();
+              return false;
+            });
           });
       runtime.activate("Watchdog", new rgnav::WatchdogImpl(runtime, *set), "Watchdog-" + config.name);
       set->start();
