@@ -41,7 +41,7 @@ HighLevelPlanningService::HighLevelPlanningService(const HighLevelPlanningConfig
       state_(loadCheckpoint(options_.checkpointFile)),
       retry_(health),
       follower_(
-          health, "avoidance", [this] { return step(); }, [] { return std::string("the task loop's step"); },
+          health, "avoidance", [this] { return step(); }, [this] { return blockActiveTask(); },
           std::chrono::milliseconds(static_cast<long>(config.pollPeriodS * 1000))) {
   validate(config_);
   makeExplorationStrategy(options_.strategy, config_.exploration);  // ConfigError now, not at the first exploration
@@ -51,24 +51,23 @@ HighLevelPlanningService::HighLevelPlanningService(const HighLevelPlanningConfig
 
 // ---- servant side ----------------------------------------------------------------------------
 
-Task HighLevelPlanningService::goTo(std::uint64_t request, const PlanGoal& goal) {
+template <class Add>
+Task HighLevelPlanningService::queue(std::uint64_t request, Add&& add) {
   if (request == 0) throw InvalidArgumentError("request ID 0");
   std::lock_guard lock(mutex_);
   const TaskId next = state_.queue.nextId();
-  const Task task = state_.queue.goTo(goal, request);
+  const Task task = add();
   if (task.id == next) health_.add("tasks");
   checkpoint();
   return task;
 }
 
+Task HighLevelPlanningService::goTo(std::uint64_t request, const PlanGoal& goal) {
+  return queue(request, [&] { return state_.queue.goTo(goal, request); });
+}
+
 Task HighLevelPlanningService::explore(std::uint64_t request) {
-  if (request == 0) throw InvalidArgumentError("request ID 0");
-  std::lock_guard lock(mutex_);
-  const TaskId next = state_.queue.nextId();
-  const Task task = state_.queue.explore(request);
-  if (task.id == next) health_.add("tasks");
-  checkpoint();
-  return task;
+  return queue(request, [&] { return state_.queue.explore(request); });
 }
 
 Task HighLevelPlanningService::stopAll(std::uint64_t request) {
@@ -243,6 +242,17 @@ void HighLevelPlanningService::runTask() {
   strayChecked_ = true;
   if (active->kind == TaskKind::GoTo) runGoTo(*active);
   if (active->kind == TaskKind::Explore) runExplore(*active);
+}
+
+std::string HighLevelPlanningService::blockActiveTask() {
+  std::lock_guard lock(mutex_);
+  const Task* active = state_.queue.active();
+  if (!active) return "the task loop's step (no task active)";
+  const Task task = *active;
+  finish(task, TaskState::Blocked, "its step failed " + std::to_string(InputFollower::kAttemptsPerRecord) +
+                                       " times in a row (the module's log says why)");
+  cancelOwed_ = true;
+  return "task " + std::to_string(task.id);
 }
 
 // Once after a start with no task active: a drive of an ended task the module may have left

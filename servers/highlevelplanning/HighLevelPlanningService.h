@@ -10,6 +10,8 @@
 //     pose (RobotPose.h); its goals become driveTo drives to their points; driving distances for
 //     the strategy come from a route planner of the module's own on the same map. Done when the
 //     explorer is.
+//   - a task whose step keeps failing (an error that is not a module away, InputFollower.h) ends
+//     Blocked with that said, so one bad task does not hold up the queue.
 //   - cancel and stop: the task ends Cancelled; if it was active (stop: always) the
 //     CollisionAvoidance module is told to cancel, which brakes the robot.
 //   - naming: the kernel's summary names the region the robot is in; an unnamed one gets a
@@ -81,11 +83,17 @@ class HighLevelPlanningService {
   TaskId nextTaskId();
 
  private:
+  // A task added by `add` (under lock) for `request`; counted and checkpointed if new.
+  template <class Add>
+  Task queue(std::uint64_t request, Add&& add);
   bool step();
   void pollKernel();
   std::optional<Pose2D> robotPose();  // fetched only where needed: the source may be away
   void runTask();
   void stopStrayDrive();
+  // A task whose step failed kAttemptsPerRecord times in a row with an error that is not a module
+  // away (InputFollower.h) ends blocked, and the robot is stopped; says which task it was.
+  std::string blockActiveTask();
   void runGoTo(const Task& task);
   void runExplore(const Task& task);
   // A new drive for the active task `task` to `goal`: its request ID checkpointed, then asked for.

@@ -10,8 +10,6 @@
 // the goal, and draws the path into its SVG and PNG.
 #include <cppunit/extensions/HelperMacros.h>
 
-#include <sys/wait.h>
-
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -22,8 +20,8 @@
 #include "core/nav/grid/PlanningErrors.h"
 #include "core/nav/planning/testing/SamePlan.h"
 #include "tests/integration/PlanningSet.h"
+#include "tests/integration/ToolRun.h"
 #include "tests/support/WaitUntil.h"
-#include "watchdog/Spawn.h"
 
 using namespace rgnav;
 using namespace rgnav::testing;
@@ -49,27 +47,6 @@ std::string noPathReason(F&& call) {
     return e.what();
   }
   return "(planned)";
-}
-
-// Runs rgnav-plan with `args` until it ends; its exit status and output (stdout and stderr).
-std::pair<int, std::string> runPlanTool(const std::vector<std::string>& args, const std::string& logFile) {
-  SpawnSpec spec;
-  spec.argv = {TestCluster::program("rgnav-plan")};
-  spec.argv.insert(spec.argv.end(), args.begin(), args.end());
-  spec.logFile = logFile;
-  spec.parentDeathSignal = SIGKILL;
-  const pid_t pid = spawnProcess(spec);
-  int status = 0;
-  try {
-    waitUntil([&] { return ::waitpid(pid, &status, WNOHANG) != 0; }, "rgnav-plan to end", std::chrono::seconds(60),
-              std::chrono::milliseconds(20));
-  } catch (...) {
-    discardChild(pid);
-    throw;
-  }
-  std::ifstream log(logFile);
-  return {WIFEXITED(status) ? WEXITSTATUS(status) : -1,
-          std::string(std::istreambuf_iterator<char>(log), std::istreambuf_iterator<char>())};
 }
 
 }  // namespace
@@ -150,7 +127,7 @@ class PathPlanningIntegrationTest : public CppUnit::TestFixture {
       std::vector<std::string> args = where;
       args.insert(args.end(), trip.begin(), trip.end());
       args.insert(args.end(), {"--svg", dir + "/plan.svg", "--png", dir + "/plan.png"});
-      const auto [code, output] = runPlanTool(args, dir + "/plan-" + where.front().substr(2) + ".log");
+      const auto [code, output] = runTool("rgnav-plan", args, dir + "/plan-" + where.front().substr(2) + ".log");
       CPPUNIT_ASSERT_EQUAL_MESSAGE(output, 0, code);
       CPPUNIT_ASSERT_MESSAGE(output, output.find("plan ") == 0);
       CPPUNIT_ASSERT_MESSAGE(output, output.find("x=9.000 y=4.000") != std::string::npos);

@@ -9,18 +9,22 @@
 
 namespace rgnav::testing {
 
-PlanningSet::PlanningSet(const std::string& setYaml)
-    : map_(twoRoomMap()),
-      cluster_(std::make_unique<TestCluster>(
-          std::vector<ClusterModule>{
-              {"RGMappingKernel",
-               {TestCluster::program("rgnav-rgmappingkernel"), "--config", TestCluster::moduleConfig("rgmappingkernel")},
-               {"RGMappingKernel"}},
-              {"PathPlanning",
-               {TestCluster::program("rgnav-pathplanning"), "--config", TestCluster::moduleConfig("pathplanning")},
-               {"PathPlanning"},
-               {"RGMappingKernel"}}},
-          setYaml)) {
+std::vector<ClusterModule> planningModules() {
+  return {
+      {"RGMappingKernel",
+       {TestCluster::program("rgnav-rgmappingkernel"), "--config", TestCluster::moduleConfig("rgmappingkernel")},
+       {"RGMappingKernel"}},
+      {"PathPlanning",
+       {TestCluster::program("rgnav-pathplanning"), "--config", TestCluster::moduleConfig("pathplanning")},
+       {"PathPlanning"},
+       {"RGMappingKernel"}}};
+}
+
+PlanningSet::PlanningSet(const std::string& setYaml, std::vector<ClusterModule> more)
+    : map_(twoRoomMap()) {
+  std::vector<ClusterModule> modules = planningModules();
+  modules.insert(modules.end(), more.begin(), more.end());
+  cluster_ = std::make_unique<TestCluster>(std::move(modules), setYaml);
   const std::string dir = cluster_->dir() + "/run/state/RGMappingKernel";
   std::filesystem::create_directories(dir);
   writeFileAtomically(dir + "/rgmap.state", serializeRgMap(map_.state()));

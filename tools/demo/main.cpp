@@ -3,8 +3,10 @@
 // running set config/sets/demo.yaml: the robot, placed on the office floor knowing nothing, is told
 // to explore (HighLevelPlanning::explore); the scripted user (DemoScript.h, DemoUser.h) answers
 // the first naming questions as they come; once the floor is explored the user names the most
-// confident object of the map (the kernel's nameObject: an object to go to must exist in the map,
-// and which objects the laser makes out is only known after exploring), then the script's tasks
+// confident object of the map the robot finds a way to (the kernel's nameObject: an object to go
+// to must exist in the map, and which objects the laser makes out is only known after exploring;
+// the PathPlanning module is asked whether a free pose in front of it can be reached from where
+// the robot stands, as a user would not name what the robot cannot go to), then the script's tasks
 // run one after the other (goTo a named room, the named object, the start). Progress lines on
 // stdout; at the end the kernel exports the map (<name>.rgmap.json/.svg/.png) into its export
 // root, the driven path (DrivenPath.h) goes beside it into --out, and the last line is
@@ -16,6 +18,7 @@
 // robot reads it.
 // Exit code 0 if the exploration ended done, every task was reached and nothing collided; 1 if
 // not; 2 for bad arguments or a set that does not answer.
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <iostream>
@@ -24,6 +27,7 @@
 
 #include "clientlibs/groundtruth/GroundTruthClient.h"
 #include "clientlibs/highlevelplanning/HighLevelPlanningClient.h"
+#include "clientlibs/pathplanning/PathPlanningClient.h"
 #include "clientlibs/rgmappingkernel/RgMappingKernelClient.h"
 #include "clientlibs/scanmapper/ScanMapperClient.h"
 #include "core/nav/planning/PlanningMapJson.h"
@@ -66,23 +70,31 @@ DemoStart waitForStart(ScanMapperClient& scanMapper, GroundTruthClient& truth, s
   return {first.front(), truth.truePose(first.front().id)};
 }
 
-// Names the most confident object of the map `name` (the one a user would click first: seen all
-// round); false if the map holds no object.
-bool nameAnObject(RgMappingKernelClient& kernel, const std::string& name) {
-  RegionId bestRegion;
-  RectangleObjectView best;
+// Names an object of the map `name`: the most confident one (a user clicks first what the robot
+// saw all round) that the PathPlanning module finds a way to from where the robot stands (a free
+// pose in front of it); a candidate without a way loses the name again. False if no object has one.
+bool nameAnObject(RgMappingKernelClient& kernel, PathPlanningClient& planner, const Pose2D& here,
+                  const std::string& name) {
+  std::vector<std::pair<RegionId, RectangleObjectView>> objects;
   for (const RegionSummaryView& summary : kernel.regions())
-    for (const RectangleObjectView& o : kernel.region(summary.id).objects)
-      if (bestRegion.isNone() || o.confidence > best.confidence) {
-        bestRegion = summary.id;
-        best = o;
-      }
-  if (bestRegion.isNone()) return false;
-  kernel.nameObject(bestRegion, {best.pose.x, best.pose.y}, name);
-  std::printf("demo: the user names the object of region %llu at (%.2f, %.2f) (%.1f x %.1f m, %.0f %% seen) %s\n",
-              static_cast<unsigned long long>(bestRegion.value()), best.pose.x, best.pose.y, best.lengthM, best.widthM,
-              100.0 * best.confidence, quotedText(name).c_str());
-  return true;
+    for (const RectangleObjectView& o : kernel.region(summary.id).objects) objects.emplace_back(summary.id, o);
+  std::stable_sort(objects.begin(), objects.end(),
+                   [](const auto& a, const auto& b) { return a.second.confidence > b.second.confidence; });
+  for (const auto& [region, o] : objects) {
+    const Eigen::Vector2d at{o.pose.x, o.pose.y};
+    kernel.nameObject(region, at, name);
+    try {
+      planner.plan(here, PlanGoal::atObject(name));
+    } catch (const Error& e) {  // no way to it (NoPath), or no free pose in front of it
+      kernel.nameObject(region, at, "");
+      continue;
+    }
+    std::printf("demo: the user names the object of region %llu at (%.2f, %.2f) (%.1f x %.1f m, %.0f %% seen) %s\n",
+                static_cast<unsigned long long>(region.value()), o.pose.x, o.pose.y, o.lengthM, o.widthM,
+                100.0 * o.confidence, quotedText(name).c_str());
+    return true;
+  }
+  return false;
 }
 
 PlanGoal goalOf(const DemoTask& task, const DemoStart& start) {
@@ -121,8 +133,11 @@ int run(const Options& options) {
   user.answerWaiting();
   bool ok = explored.state == TaskState::Done;
 
-  if (!nameAnObject(kernel, script.objectName))
-    std::printf("demo: the map holds no object to name %s\n", quotedText(script.objectName).c_str());
+  PathPlanningClient planner(settings);
+  const Pose2D here = scanMapper.correctedPose(scanMapper.latestCorrectedId());
+  if (!nameAnObject(kernel, planner, here, script.objectName))
+    std::printf("demo: the map holds no object the robot finds a way to, to name %s\n",
+                quotedText(script.objectName).c_str());
   std::size_t reached = 0;
   for (const DemoTask& task : script.tasks) {
     std::printf("demo: the user asks the robot to go to %s\n", task.describe().c_str());

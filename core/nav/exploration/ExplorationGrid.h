@@ -1,7 +1,7 @@
 // ExplorationGrid: what exploration knows of the world, taken from an RG map (PlanningMap.h) on
 // one map-frame grid: a cell is Free if it lies in some region's freespace (the regions' 15 cm
 // freespace bitmaps placed by their region frames), Wall if it lies within wallClearanceM of a line
-// of some region's line map, Unknown otherwise. Each free cell keeps the region whose freespace
+// of some region's line map (also where a freespace holds it), Unknown otherwise. Each free cell keeps the region whose freespace
 // holds it (the one with the lowest ID where regions overlap). Built anew for each map revision.
 #pragma once
 

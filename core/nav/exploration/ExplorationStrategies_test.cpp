@@ -85,11 +85,15 @@ class ExplorationStrategiesTest : public CppUnit::TestFixture {
   CPPUNIT_TEST_SUITE(ExplorationStrategiesTest);
   CPPUNIT_TEST(rgCompletesTheCurrentRegionBeforeAnyGateway);
   CPPUNIT_TEST(rgDrivesThroughAnUntraversedDoorToAPlannablePoint);
+  CPPUNIT_TEST(rgCompletesARoomItsHallwaySawInto);
   CPPUNIT_TEST(rgTakesGatewaysFirstInFirstOutAcrossRegions);
   CPPUNIT_TEST(rgDropsAGatewayFailedTooOften);
   CPPUNIT_TEST(rgIsDoneWhenNothingIsLeft);
   CPPUNIT_TEST(nearestFrontierIsNearestByDrivingDistance);
   CPPUNIT_TEST(nearestFrontierSkipsUnreachableAndFailedGoals);
+  CPPUNIT_TEST(aDoorWithNoSideKnownIsDrivenThroughToItsUnexploredSide);
+  CPPUNIT_TEST(aRobotThePlannerCannotStartFromDropsNothing);
+  CPPUNIT_TEST(aFrontierSeenFromItsViewpointIsNotGivenAgain);
   CPPUNIT_TEST(strategiesByName);
   CPPUNIT_TEST_SUITE_END();
 
@@ -122,6 +126,24 @@ class ExplorationStrategiesTest : public CppUnit::TestFixture {
     CPPUNIT_ASSERT(goal.point.x() > 4.05 && goal.point.x() <= 4.5);  // past the door's line
     CPPUNIT_ASSERT_DOUBLES_EQUAL(2.0, goal.point.y(), 1e-9);
     CPPUNIT_ASSERT(length(goal.point).has_value());
+  }
+
+  void rgCompletesARoomItsHallwaySawInto() {
+    // Region 1 saw most of room 2 through door 1 before the door was known: its freespace covers
+    // the room up to x = 7.5 and, through the gap in room 2's top wall, a little beyond, so the
+    // frontier there is region 1's by its cells. In room 2, it is room 2's to complete before
+    // door 2 (open, in region 1's left wall).
+    const std::vector<Segment2> walls{{{0, 0}, {4, 0}}, {{0, 4}, {4, 4}}, {{0, 0}, {0, 1.6}},
+                                      {{0, 2.4}, {0, 4}}, {{4, 0}, {4, 1.6}}, {{4, 2.4}, {4, 4}}};
+    const RegionView r1 = exploredRegion(kR1, {}, walls, {{{-0.3, 0.6}, {0.0, 3.4}}, {{0.0, 0.0}, {4.0, 4.0}}, {{4.0, 0.0}, {7.5, 4.3}}});
+    const auto map = planningMap({r1, room(kR2, 4.0, true, false, true)},
+                                 {doorAt(GatewayId{1}, 4.0, kR1, kR2), doorAt(GatewayId{2}, 0.0, kNone, kR1)});
+    rgnav::RgExploration rg({});
+    const ExplorationGoal goal = rg.next({map, {6.0, 2.0, 0.0}, kR2}, straightLine({6.0, 2.0}));
+    CPPUNIT_ASSERT(goal.kind == Kind::Frontier);
+    CPPUNIT_ASSERT(goal.region == kR2);
+    CPPUNIT_ASSERT(goal.point.x() > 4.5 && goal.point.x() < 7.0);  // below the gap, in room 2
+    CPPUNIT_ASSERT(goal.point.y() > 3.3 && goal.point.y() < 3.9);
   }
 
   void rgTakesGatewaysFirstInFirstOutAcrossRegions() {
@@ -203,6 +225,45 @@ class ExplorationStrategiesTest : public CppUnit::TestFixture {
     CPPUNIT_ASSERT(nearest.next({map, {3.0, 1.0, 0.0}, kR1}, straightLine(robot)) == first);
     nearest.failed(first);
     CPPUNIT_ASSERT(nearest.next({map, {3.0, 1.0, 0.0}, kR1}, straightLine(robot)).region == kR2);
+  }
+
+  void aDoorWithNoSideKnownIsDrivenThroughToItsUnexploredSide() {
+    // The door seen from afar: no side attached yet, and the hallway's freespace reaches 0.3 m
+    // past it. Its unexplored side is x > 4 wherever the robot stands.
+    const auto map = planningMap({room(kR1, 0.0, false, true)}, {doorAt(GatewayId{1}, 4.0, kNone, kNone)});
+    for (const Vector2d& robot : {Vector2d(1.0, 2.0), Vector2d(4.15, 3.2)}) {  // the second nearer x > 4
+      rgnav::RgExploration rg({});
+      const ExplorationGoal goal = rg.next({map, {robot.x(), robot.y(), 0.0}, kR1}, straightLine(robot));
+      CPPUNIT_ASSERT(goal.kind == Kind::Gateway);
+      CPPUNIT_ASSERT(goal.point.x() > 4.05);
+    }
+  }
+
+  void aRobotThePlannerCannotStartFromDropsNothing() {
+    // Nothing plans, not even to the robot's own position: the straight line stands in.
+    const auto map = planningMap({room(kR1, 0.0, false, true, true)}, {doorAt(GatewayId{1}, 4.0, kR1, kNone)});
+    const PathLength nothing = [](const Vector2d&) { return std::optional<double>(); };
+    rgnav::RgExploration rg({});
+    const ExplorationGoal goal = rg.next({map, {2.0, 2.0, 0.0}, kR1}, nothing);
+    CPPUNIT_ASSERT(goal.kind == Kind::Frontier);
+    CPPUNIT_ASSERT_EQUAL(std::size_t(1), rg.queue().size());
+    // Where the robot's position plans, nothing else does: all is unreachable, and that is Done.
+    const PathLength onlyHere = [](const Vector2d& p) {
+      return (p - Vector2d(2.0, 2.0)).norm() < 1e-9 ? std::optional<double>(0.0) : std::nullopt;
+    };
+    CPPUNIT_ASSERT(rg.next({map, {2.0, 2.0, 0.0}, kR1}, onlyHere).kind == Kind::Done);
+    CPPUNIT_ASSERT(rg.queue().empty());
+  }
+
+  void aFrontierSeenFromItsViewpointIsNotGivenAgain() {
+    const auto map = planningMap({room(kR1, 0.0, false, true, true), room(kR2, 4.0, true, false, true)},
+                                 {doorAt(GatewayId{1}, 4.0, kR1, kR2)});
+    rgnav::NearestFrontierExploration nearest({});
+    const ExplorationGoal first = nearest.next({map, {3.0, 1.0, 0.0}, kR1}, straightLine({3.0, 1.0}));
+    CPPUNIT_ASSERT(first.region == kR1);
+    // The robot reached it and the frontier is still there (the map did not change): the other.
+    const Vector2d there = first.point;
+    CPPUNIT_ASSERT(nearest.next({map, {there.x(), there.y(), 0.0}, kR1}, straightLine(there)).region == kR2);
   }
 
   void strategiesByName() {

@@ -23,7 +23,8 @@ struct ExplorationGoal {
   Kind kind = Kind::Done;
   Eigen::Vector2d point = Eigen::Vector2d::Zero();  // map frame: where to drive
   RegionId region;    // Frontier: the frontier's region; Gateway: the region beyond, if known
-  GatewayId gateway;  // Gateway: the gateway to traverse (point: its crossing point on the far side)
+  GatewayId gateway;  // Gateway: the gateway to traverse (point: just past its line on the far side,
+                      // where the planner plans to; ExplorationTargets.h)
   std::string reason; // one line for logs and the task's progress
 
   friend bool operator==(const ExplorationGoal&, const ExplorationGoal&) = default;

@@ -3,16 +3,25 @@
 #include "core/nav/exploration/ExplorationTargets.h"
 
 #include <algorithm>
+#include <cmath>
 #include <numeric>
 
 namespace rgnav {
 namespace {
 
 constexpr std::size_t kDrivePointPlans = 3;  // candidates of one gateway planned at most
+constexpr double kSideProbeM = 1.0;          // a crossing point's surroundings, to tell its side's
 
-bool inRegion(const ExplorationGrid& grid, const Eigen::Vector2d& point, RegionId region) {
-  int col = 0, row = 0;
-  return grid.cellOf(point, col, row) && grid.regionAt(col, row) == region;
+// The unknown cells within kSideProbeM of `point` (outside the grid: unknown too).
+std::size_t unknownAround(const ExplorationGrid& grid, const Eigen::Vector2d& point) {
+  const Eigen::Vector2d q = (point - grid.originM()) / grid.resolutionM();
+  const int span = static_cast<int>(std::ceil(kSideProbeM / grid.resolutionM()));
+  const int col = static_cast<int>(std::floor(q.x())), row = static_cast<int>(std::floor(q.y()));
+  std::size_t count = 0;
+  for (int r = row - span; r <= row + span; ++r)
+    for (int c = col - span; c <= col + span; ++c)
+      if ((grid.cellCenter(c, r) - point).norm() <= kSideProbeM && grid.at(c, r) == ExplorationCell::Unknown) ++count;
+  return count;
 }
 
 std::size_t farthestFrom(const std::vector<Eigen::Vector2d>& points, const Eigen::Vector2d& from, std::size_t except) {
@@ -24,24 +33,28 @@ std::size_t farthestFrom(const std::vector<Eigen::Vector2d>& points, const Eigen
 }
 
 std::optional<OpenGateway> openGateway(const GatewayView& g, const ExplorationGrid& grid, const Eigen::Vector2d& robot) {
-  if (g.neutralised || g.sideA.isNone() == g.sideB.isNone() || g.crossingPoints.size() < 2) return std::nullopt;
-  const std::size_t knownSide = g.sideA.isNone() ? 1 : 0;
+  if (g.neutralised || (!g.sideA.isNone() && !g.sideB.isNone()) || g.crossingPoints.size() < 2) return std::nullopt;
+  const std::optional<std::size_t> knownSide =
+      !g.sideA.isNone() ? std::optional<std::size_t>(0) : !g.sideB.isNone() ? std::optional<std::size_t>(1) : std::nullopt;
   const RegionId known = knownSide == 0 ? g.sideA : g.sideB;
-  const auto given = [&](std::size_t side) {
-    const std::size_t c = g.sideCrossings[side];
-    return c < g.crossingPoints.size() ? std::optional<std::size_t>(c) : std::nullopt;
+  const auto given = [&](std::optional<std::size_t> side) -> std::optional<std::size_t> {
+    if (!side || g.sideCrossings[*side] >= g.crossingPoints.size()) return std::nullopt;
+    return g.sideCrossings[*side];
   };
-  std::optional<std::size_t> near = given(knownSide), far = given(1 - knownSide);
-  if (!near) {
-    for (std::size_t i = 0; i < g.crossingPoints.size() && !near; ++i)
-      if (i != far && inRegion(grid, g.crossingPoints[i], known)) near = i;
+  std::optional<std::size_t> near = given(knownSide);
+  std::optional<std::size_t> far = knownSide ? given(1 - *knownSide) : std::nullopt;
+  if (!near && !far) {
+    // The unexplored side: the crossing point with the most unknown cells around it (the one
+    // farther from the robot on a tie).
+    std::size_t most = 0;
+    for (std::size_t i = 0; i < g.crossingPoints.size(); ++i) {
+      const std::size_t unknown = unknownAround(grid, g.crossingPoints[i]);
+      if (!far || unknown > most ||
+          (unknown == most && (g.crossingPoints[i] - robot).norm() > (g.crossingPoints[*far] - robot).norm()))
+        far = i, most = unknown;
+    }
   }
-  if (!near) {
-    std::size_t nearest = far == 0 ? 1 : 0;
-    for (std::size_t i = 0; i < g.crossingPoints.size(); ++i)
-      if (i != far && (g.crossingPoints[i] - robot).norm() < (g.crossingPoints[nearest] - robot).norm()) nearest = i;
-    near = nearest;
-  }
+  if (!near) near = farthestFrom(g.crossingPoints, g.crossingPoints[*far], *far);
   if (!far || *far == *near) far = farthestFrom(g.crossingPoints, g.crossingPoints[*near], *near);
   OpenGateway out{g.id, known, g.crossingPoints[*near], g.crossingPoints[*far], 0.0};
   for (const Eigen::Vector2d& a : g.gatewayPoints)
@@ -120,21 +133,27 @@ std::optional<std::pair<std::size_t, double>> Reachability::nearest(const std::v
   return std::nullopt;
 }
 
-std::optional<Eigen::Vector2d> drivePoint(const OpenGateway& gateway, const ExplorationGrid& grid, double robotRadiusM,
-                                          Reachability& reach) {
+std::vector<Eigen::Vector2d> drivePointCandidates(const OpenGateway& gateway, const ExplorationGrid& grid,
+                                                  double robotRadiusM) {
+  std::vector<Eigen::Vector2d> out;
   const double span = (gateway.far - gateway.near).norm(), cell = grid.resolutionM();
-  if (span <= 0.0) return std::nullopt;
+  if (span <= 0.0) return out;
   const Eigen::Vector2d middle = 0.5 * (gateway.near + gateway.far), away = (gateway.far - gateway.near) / span;
-  std::size_t planned = 0;
-  for (double past = 0.5 * span; past >= cell - 1e-9 && planned < kDrivePointPlans; past -= cell) {
+  for (double past = 0.5 * span; past >= cell - 1e-9; past -= cell) {
     const Eigen::Vector2d p = middle + away * past;
     int col = 0, row = 0;
-    if (!grid.cellOf(p, col, row) || grid.at(col, row) != ExplorationCell::Free ||
-        grid.wallDistanceM(col, row) < goalClearanceM(grid, robotRadiusM))
-      continue;
-    ++planned;
-    if (reach.lengthTo(p)) return p;
+    if (grid.cellOf(p, col, row) && grid.at(col, row) == ExplorationCell::Free &&
+        grid.wallDistanceM(col, row) >= goalClearanceM(grid, robotRadiusM))
+      out.push_back(p);
   }
+  return out;
+}
+
+std::optional<Eigen::Vector2d> drivePoint(const OpenGateway& gateway, const ExplorationGrid& grid, double robotRadiusM,
+                                          Reachability& reach) {
+  const std::vector<Eigen::Vector2d> candidates = drivePointCandidates(gateway, grid, robotRadiusM);
+  for (std::size_t i = 0; i < std::min(candidates.size(), kDrivePointPlans); ++i)
+    if (reach.lengthTo(candidates[i])) return candidates[i];
   return std::nullopt;
 }
 

@@ -1,9 +1,12 @@
 // ExplorationTargets: what both exploration strategies (RgExploration.h, NearestFrontierExploration.h)
 // choose from and how they check it, so that their comparison measures the order of the goals only:
 //   - Open gateways: gateways of the map with a side whose region is not known yet, not
-//     neutralised. Which crossing point is beyond: the unknown side's, if sideCrossings says which;
-//     else the one farthest from the known side's crossing point, or (neither known) from the
-//     crossing point that lies in the known region's free cells, or nearest the robot.
+//     neutralised; also those with no region on either side yet (the kernel attaches a door's
+//     side only when the robot comes near it, so a door seen from afar is such a hypothesis).
+//     Which crossing point lies beyond, on the unexplored side: the unknown side's if sideCrossings
+//     says which; else the one farthest from the known side's crossing point; if sideCrossings
+//     gives neither, the one with the most unknown cells within 1 m (the other side is the floor
+//     the robot saw; a door seen from afar shows only a cone of the room behind it).
 //   - A gateway's drive point: the robot must cross the gateway's line for the kernel to open the
 //     region beyond (the passage tracker reports a traversal when the robot's path crosses it),
 //     and the route planner plans only to points in a region's free cells clear of its walls by
@@ -47,7 +50,7 @@ inline constexpr std::size_t kNearestByLine = 4;       // candidates planned per
 
 struct OpenGateway {
   GatewayId id;
-  RegionId known;                                   // the region on its known side
+  RegionId known;                                   // the region on its known side; none if neither is
   Eigen::Vector2d near = Eigen::Vector2d::Zero();   // crossing point on the known side
   Eigen::Vector2d far = Eigen::Vector2d::Zero();    // crossing point beyond
   double halfWidthM = 0.0;                          // half the spread of its gateway points
@@ -77,7 +80,11 @@ class Reachability {
   std::vector<std::pair<Eigen::Vector2d, std::optional<double>>> asked_;
 };
 
-// The gateway's drive point (see above), if any.
+// The gateway's drive point candidates that the grid shows free and clear of the lines, farthest
+// beyond the line first (see above); none planned.
+std::vector<Eigen::Vector2d> drivePointCandidates(const OpenGateway& gateway, const ExplorationGrid& grid,
+                                                  double robotRadiusM);
+// The gateway's drive point: the first of its first few candidates that the planner plans to.
 std::optional<Eigen::Vector2d> drivePoint(const OpenGateway& gateway, const ExplorationGrid& grid, double robotRadiusM,
                                           Reachability& reach);
 

@@ -31,7 +31,8 @@ inline double goalClearanceM(const ExplorationGrid& grid, double robotRadiusM) {
 
 // Largest first. A cluster longer than usefulRangeM (along its main axis) is cut into as many
 // equal pieces as it takes for each to be at most that long: one viewpoint sees at most that much
-// of it. The viewpoint is a free cell that the free cells join to the middle cell, nearest to the
+// of it. (The range does not drop frontier cells far from where the robot scanned: the PlanningMap
+// holds no scan poses, and the freespace a region holds is what its scans saw, within range.) The viewpoint is a free cell that the free cells join to the middle cell, nearest to the
 // point viewpointBackoffM from the middle into the free side, among those goalClearanceM from
 // every line (so the route planner, whose walls are inflated by the robot
 // radius, accepts it as a goal); where no such cell is near, the one farthest from the lines.

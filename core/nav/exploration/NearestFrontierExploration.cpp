@@ -26,14 +26,16 @@ ExplorationGoal NearestFrontierExploration::next(const ExplorationInput& input, 
   std::vector<Eigen::Vector2d> points;
   for (const Frontier& f : frontiers) points.push_back(f.viewpoint);
   std::vector<GatewayId> gateways;
+  // A gateway's candidate farthest beyond its line stands for it (planned only if it is among the
+  // nearest, so that many open gateways do not cost a plan each).
   for (const OpenGateway& g : open) {
-    const auto point = drivePoint(g, grid, config_.robotRadiusM, reach);
-    if (!point || failuresAt(frontierFailures_, *point) >= config_.maxGoalFailures) continue;
-    if ((*point - robot).norm() <= kSameGoalM) {
-      countFailure(frontierFailures_, *point);
+    const std::vector<Eigen::Vector2d> candidates = drivePointCandidates(g, grid, config_.robotRadiusM);
+    if (candidates.empty() || failuresAt(frontierFailures_, candidates.front()) >= config_.maxGoalFailures) continue;
+    if ((candidates.front() - robot).norm() <= kSameGoalM) {
+      countFailure(frontierFailures_, candidates.front());
       continue;
     }
-    points.push_back(*point);
+    points.push_back(candidates.front());
     gateways.push_back(g.id);
   }
   const auto best = reach.nearest(points);

@@ -1,13 +1,18 @@
-// Region-by-region exploration (RgExploration.h; thesis chapter 7). Deliberate differences from
-// the thesis, which leaves the strategy to future work: the gateway queue is FIFO across regions
-// (breadth first over the RG graph), a frontier at an open gateway is the gateway's (see
-// ExplorationTargets.h), and a gateway is driven through to a point just past its line that the
-// route planner accepts.
+// Region-by-region exploration (RgExploration.h; thesis chapter 7: "each region should first be
+// completely explored before traversing any new gateway. Gateways that have not yet been traversed
+// can be stored on a stack ... visit these gateways in a breadth first manner"). Deliberate
+// differences from the thesis, which leaves the strategy to future work: the untraversed gateways
+// wait in a first-in first-out queue across regions, not a stack, since breadth first is what the
+// thesis asks for; a frontier at an open gateway is the gateway's (see
+// ExplorationTargets.h), a gateway is driven through to a point just past its line that the route
+// planner accepts, and a frontier is also the current region's when the current region's
+// freespace holds its viewpoint (where a lower region's freespace overlaps the current one).
 #include "core/nav/exploration/RgExploration.h"
 
 #include <algorithm>
 #include <sstream>
 
+#include "core/lines/ScanPoints.h"
 #include "core/nav/exploration/ExplorationTargets.h"
 
 namespace rgnav {
@@ -26,6 +31,16 @@ ExplorationGoal frontierGoal(const Frontier& f, double lengthM, const std::strin
   reason << why << ": frontier of region " << f.region << " (" << f.lengthM() << " m) at " << text(f.middle)
          << ", viewpoint " << lengthM << " m away";
   return {ExplorationGoal::Kind::Frontier, f.viewpoint, f.region, GatewayId{}, reason.str()};
+}
+
+// Whether the frontier is the region's to complete: its cells' region (the lowest of those whose
+// freespaces overlap there), or the region's freespace holds its viewpoint. A room entered
+// through a door its hallway saw into before the door was known overlaps the hallway's freespace,
+// and the room's frontiers there are the room's; their cells may lie just beyond the room's own
+// freespace, where the hallway saw farther, so the viewpoint decides, well inside.
+bool ofRegion(const Frontier& f, const RegionView& region) {
+  return f.region == region.summary.id ||
+         region.freespace.isFreeAt(transformPoint(inverse(region.summary.frame), f.viewpoint));
 }
 
 // The reachable frontier nearest by driving distance, if any.
@@ -61,8 +76,14 @@ ExplorationGoal RgExploration::next(const ExplorationInput& input, const PathLen
 
   // 1. The current region's frontiers.
   std::vector<Frontier> here;
-  std::copy_if(frontiers.begin(), frontiers.end(), std::back_inserter(here),
-               [&](const Frontier& f) { return !input.currentRegion.isNone() && f.region == input.currentRegion; });
+  const auto current = std::find_if(input.map.regions.begin(), input.map.regions.end(),
+                                    [&](const RegionView& r) { return r.summary.id == input.currentRegion; });
+  if (current != input.map.regions.end())
+    for (const Frontier& f : frontiers)
+      if (ofRegion(f, *current)) {
+        here.push_back(f);
+        here.back().region = current->summary.id;
+      }
   if (auto goal = nearestFrontier(here, reach, "completing the current region")) return *goal;
 
   // 2. The oldest open gateway that can be driven through; one that cannot leaves the queue. One
@@ -80,8 +101,9 @@ ExplorationGoal RgExploration::next(const ExplorationInput& input, const PathLen
       continue;
     }
     std::ostringstream reason;
-    reason << "no reachable frontier left in region " << input.currentRegion << ": through untraversed gateway " << *it
-           << " of region " << g->known << " (" << queue_.size() << " queued) to " << text(*point);
+    reason << "no reachable frontier left in region " << input.currentRegion << ": through untraversed gateway " << *it;
+    if (!g->known.isNone()) reason << " of region " << g->known;
+    reason << " (" << queue_.size() << " queued) to " << text(*point);
     return {ExplorationGoal::Kind::Gateway, *point, RegionId{}, *it, reason.str()};
   }
 

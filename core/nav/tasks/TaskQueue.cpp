@@ -25,6 +25,13 @@ void checkGoal(const PlanGoal& goal) {
   }
 }
 
+// The task with `state` first in `tasks` (a Task* or a const Task*, as `tasks` is); none if none.
+template <class Tasks>
+auto firstIn(Tasks& tasks, TaskState state) -> decltype(&tasks.front()) {
+  auto it = std::find_if(tasks.begin(), tasks.end(), [&](const Task& t) { return t.state == state; });
+  return it == tasks.end() ? nullptr : &*it;
+}
+
 }  // namespace
 
 TaskQueue::TaskQueue(std::size_t keptEnded) : keptEnded_(keptEnded) {}
@@ -94,19 +101,15 @@ const Task& TaskQueue::cancel(TaskId id, const std::string& reason) {
   return *it;
 }
 
-Task* TaskQueue::activeTask() {
-  auto it = std::find_if(tasks_.begin(), tasks_.end(), [](const Task& t) { return t.state == TaskState::Active; });
-  return it == tasks_.end() ? nullptr : &*it;
-}
+Task* TaskQueue::activeTask() { return firstIn(tasks_, TaskState::Active); }
 
-const Task* TaskQueue::active() const { return const_cast<TaskQueue*>(this)->activeTask(); }
+const Task* TaskQueue::active() const { return firstIn(tasks_, TaskState::Active); }
 
 const Task* TaskQueue::startNext() {
   if (Task* task = activeTask()) return task;
-  auto it = std::find_if(tasks_.begin(), tasks_.end(), [](const Task& t) { return t.state == TaskState::Queued; });
-  if (it == tasks_.end()) return nullptr;
-  it->state = TaskState::Active;
-  return &*it;
+  Task* next = firstIn(tasks_, TaskState::Queued);
+  if (next) next->state = TaskState::Active;
+  return next;
 }
 
 void TaskQueue::setProgress(std::uint64_t drive, std::uint32_t drives, double distanceLeftM, const std::string& progress) {
