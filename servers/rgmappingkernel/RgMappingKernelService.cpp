@@ -142,11 +142,14 @@ PathView RgMappingKernelService::findPath(const RgPlace& start, const RgPlace& g
 }
 
 void RgMappingKernelService::nameRegion(std::uint64_t requestId, RegionId id, const std::string& name) {
-  std::lock_guard lock(mutex_);
-  if (requests_.answered(requestId)) return;
-  kernel_->nameRegion(id, name);
-  requests_.record(requestId, 0);
-  checkpoint();
+  {
+    std::lock_guard lock(mutex_);
+    if (requests_.answered(requestId)) return;
+    kernel_->nameRegion(id, name);
+    requests_.record(requestId, 0);
+    checkpoint();
+  }
+  writer_.flush();  // a name answered for is the user's word: nobody asks again, a restart must keep it
 }
 
 RegionId RgMappingKernelService::regionByName(const std::string& name) {
@@ -158,11 +161,14 @@ RegionId RgMappingKernelService::regionByName(const std::string& name) {
 
 void RgMappingKernelService::nameObject(std::uint64_t requestId, RegionId region, const Eigen::Vector2d& atInRegion,
                                         const std::string& name) {
-  std::lock_guard lock(mutex_);
-  if (requests_.answered(requestId)) return;
-  kernel_->nameObject(region, atInRegion, name);
-  requests_.record(requestId, 0);
-  checkpoint();
+  {
+    std::lock_guard lock(mutex_);
+    if (requests_.answered(requestId)) return;
+    kernel_->nameObject(region, atInRegion, name);
+    requests_.record(requestId, 0);
+    checkpoint();
+  }
+  writer_.flush();  // as nameRegion
 }
 
 RgMappingKernel::NamedObject RgMappingKernelService::objectByName(const std::string& name) {

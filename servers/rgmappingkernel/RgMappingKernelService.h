@@ -12,8 +12,10 @@
 // that changed its structure, after every name, merge or undone merge, at least every `checkpointScans` scans,
 // and at the end, with the scans' laser data in a journal beside it (`checkpointFile`.scans,
 // RgMapCodec.h): each checkpoint appends the new scans to the journal, then replaces the map. The
-// files are written by a thread of their own (CheckpointWriter.h), so no call waits for them; one
-// that cannot be written degrades the module and is retried with backoff.
+// files are written by a thread of their own (CheckpointWriter.h), so no call waits for them but
+// a name's (nameRegion, nameObject): it answers once its checkpoint is written (or failed), since
+// a user's name is given once and a kill before the write would lose it. One that cannot be
+// written degrades the module and is retried with backoff.
 // After a restart it resumes after the last scan, event and pose revision the checkpoint holds.
 // Names, merges, undone merges and door states carry request IDs and act once per ID (RequestLog.h).
 // Gateway traversals the Localization module confirms (thesis 5.3) are checked against the map

@@ -26,7 +26,8 @@ FaultRecord injectFaults(TestCluster& cluster, const FaultPlan& plan) {
   FaultRecord record;
   for (std::size_t i = 0; i < faults.size(); ++i) {
     sleepUntilOrInterrupted(begin + std::chrono::duration_cast<Clock::duration>(interval * double(i + 1)));
-    if (i == faults.size() / 2) {
+    if (plan.finished && plan.finished()) break;
+    if (plan.killNaming && i == faults.size() / 2) {
       const auto naming = cluster.waitFor("NameService", isRunning, "running");
       ::kill(static_cast<pid_t>(naming.pid), SIGKILL);
       cluster.waitFor("NameService", [&](const ModuleProcessInfo& m) { return isRunning(m) && m.pid != naming.pid; },

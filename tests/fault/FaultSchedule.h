@@ -1,9 +1,11 @@
 // FaultSchedule: how long a log's replay takes, and the faults of a fault-injection run: `kills` SIGKILLs and `stops` SIGSTOPs in a
 // seeded order, spread evenly over `spanSeconds`, each dealt to the next of `targets` in turn
-// (round robin) while it runs; omniNames is SIGKILLed once half way. After every fault it waits
+// (round robin) while it runs; omniNames is SIGKILLed once half way (unless killNaming is false).
+// The faults stop early once `finished` (if given) holds: the run they disturb is over. After every fault it waits
 // until the watchdog has the module running again under a new PID and records how long that took.
 #pragma once
 
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -17,6 +19,8 @@ struct FaultPlan {
   int stops = 0;
   double spanSeconds = 0.0;
   unsigned seed = 7;
+  bool killNaming = true;
+  std::function<bool()> finished = {};
 };
 
 struct FaultRecord {

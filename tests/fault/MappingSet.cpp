@@ -62,6 +62,10 @@ std::vector<ClusterModule> shippedSetModules(const std::string& relative) {
 
 nlohmann::json finishedMap(TestCluster& cluster, double limitSeconds, const std::string& name) {
   waitForEndOfMap(cluster, limitSeconds);
+  return exportedMap(cluster, name);
+}
+
+nlohmann::json exportedMap(TestCluster& cluster, const std::string& name) {
   RgMappingKernelClient kernel(cluster.clientSettings());
   kernel.exportMap("", name, false);
   std::ifstream in(cluster.dir() + "/run/exports/" + name + ".rgmap.json");

@@ -30,4 +30,7 @@ void waitForEndOfMap(TestCluster& cluster, double limitSeconds);
 // limitSeconds.
 nlohmann::json finishedMap(TestCluster& cluster, double limitSeconds, const std::string& name = "map");
 
+// Exports the kernel's map as it is now (as finishedMap, without waiting for the end of the data).
+nlohmann::json exportedMap(TestCluster& cluster, const std::string& name);
+
 }  // namespace rgnav::testing

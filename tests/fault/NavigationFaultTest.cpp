@@ -1,101 +1,124 @@
-// rgnav-faulttest-navigation (`rgctl faulttest navigation`, issue "Exploration, tasks and the
-// navigating demo"): the navigating demo (rgnav-demo on the modules of config/sets/demo.yaml, in
-// a test cluster: own omniNames on free loopback ports, a temporary directory, the watchdog
-// restarting every module without limit) runs twice: once undisturbed, once while every module of
-// the set but the simulator is SIGKILLed `--kills` times in turn (FaultSchedule.h; omniNames once
-// too), spread over 0.8 of the undisturbed run's duration. The disturbed demo must complete every
-// task with no collision (its summary line: tasks=N/N collisions=0), every kill must be recovered,
-// and its final map must hold as many regions and gateways as the undisturbed run's. Two runs of
-// the real-time simulator differ in timing, so the maps are compared by their counts, not by their
-// geometry (rgnav-faulttest-rgmap compares geometry on a replayed log, where timing does not
-// matter). Lines: each run's summary, then
-//   faulttest navigation: kills=… recovered=… tasks=…/… collisions=… regions=…/… gateways=…/…
-//   time_s=…/… result=PASS|FAIL
-// (undisturbed/disturbed where two numbers). Exit code 0 only on PASS. A run takes as long as the
-// demo (tens of minutes on a loaded machine), so the suite does not run it.
-#include <sys/wait.h>
-
-#include <chrono>
+// rgnav-faulttest-navigation: fault injection on the navigating demo (issue "Exploration, tasks and
+// the navigating demo", `rgctl faulttest navigation`). The demo's whole robot (config/sets/demo.yaml,
+// in a test cluster: free loopback ports, a temporary directory, its own omniNames; the kernel
+// exports there) runs the demo (rgnav-demo: explore the office, name three regions, three tasks)
+// twice: once undisturbed (or its facts are read from --reference), once while every module of
+// the set but the simulator is SIGKILLed in turn (40 kills by default, by the PID the watchdog
+// reports, spread evenly over 85 % of the undisturbed run's time, each after the previous victim
+// runs again under a new PID). Each run's lines are echoed ("undisturbed | …", "faults | …").
+// The disturbed demo must explore, reach every task and collide with nothing (its exit code and
+// summary line), the watchdog must have restarted each victim and nothing else, and the final map
+// must have the same number of regions and gateways and the same region names as the undisturbed
+// one; the gateways' classes, the neutralised gateways and the regions' total area are compared
+// and reported, not required (the robot drives another path under faults, and a gateway's class
+// is the detector's belief from the scans it saw). Last line:
+//   faulttest navigation: kills=40 restarts=40 tasks=3/3 collisions=0 regions=…/… gateways=…/…
+//   neutralized=…/… names=same classes=same|differ area_m2=…/… result=PASS
+// (disturbed/undisturbed). Exit code 0 only if every required check held.
+#include <algorithm>
+#include <atomic>
 #include <cstdio>
 #include <fstream>
 #include <iostream>
-#include <map>
-#include <sstream>
+#include <thread>
 
 #include "core/config/ShippedConfig.h"
+#include "tests/fault/DemoRun.h"
 #include "tests/fault/FaultSchedule.h"
 #include "tests/fault/MappingSet.h"
 #include "tests/support/cluster/Interruption.h"
 #include "tools/common/CommandLine.h"
-#include "watchdog/Spawn.h"
 
 namespace po = boost::program_options;
 using namespace rgnav;
 using namespace rgnav::testing;
+using nlohmann::json;
 
 namespace {
 
 struct Options {
   int kills = 40;
   unsigned seed = 7;
-  double limitSeconds = 5400.0;
+  DemoFiles files{shippedConfigFile("worlds/office.yaml"), shippedConfigFile("demo/answers.yaml"),
+                  shippedConfigFile("demo/tasks.yaml")};
+  std::string start;  // the simulator's --start; empty: the set's
+  std::string reference, saveReference;
+  double spanS = 0.0;  // 0: 85 % of the undisturbed run's time
+  int limitS = 5400;
 };
 
-// The demo's summary line as key=value pairs, and its exit status.
-struct DemoResult {
+// An undisturbed run's result: its summary line and its map's facts.
+struct Reference {
   std::map<std::string, std::string> summary;
-  int exitStatus = -1;
-  double seconds = 0.0;
-
-  std::string get(const std::string& key) const { return summary.count(key) ? summary.at(key) : "?"; }
+  MapFacts facts;
 };
 
-std::map<std::string, std::string> summaryOf(const std::string& logFile) {
-  std::ifstream in(logFile);
-  std::string line, last;
-  while (std::getline(in, line))
-    if (line.rfind("demo: explored_share=", 0) == 0) last = line;
-  std::map<std::string, std::string> fields;
-  std::istringstream words(last.substr(std::min<std::size_t>(last.size(), 6)));
-  for (std::string word; words >> word;)
-    if (const auto eq = word.find('='); eq != std::string::npos) fields[word.substr(0, eq)] = word.substr(eq + 1);
-  return fields;
-}
-
-// Starts rgnav-demo on the cluster; its output goes to `logFile`.
-pid_t startDemo(TestCluster& cluster, const std::string& logFile) {
-  SpawnSpec spec;
-  spec.argv = {TestCluster::program("rgnav-demo"), "--world", shippedConfigFile("worlds/office.yaml"), "--answers",
-               shippedConfigFile("demo/answers.yaml"), "--tasks", shippedConfigFile("demo/tasks.yaml"), "--out",
-               cluster.dir(), "--name", "demo"};
-  spec.env = {{"RGNAV_NAMING", "127.0.0.1:" + std::to_string(cluster.namingPort())}};
-  spec.logFile = logFile;
-  spec.parentDeathSignal = SIGKILL;
-  return spawnProcess(spec);
-}
-
-DemoResult finishDemo(pid_t pid, const std::string& logFile, std::chrono::steady_clock::time_point begin,
-                      double limitSeconds) {
-  DemoResult result;
-  int status = 0;
-  while (::waitpid(pid, &status, WNOHANG) == 0) {
-    if (std::chrono::steady_clock::now() - begin > std::chrono::duration<double>(limitSeconds)) {
-      discardChild(pid);
-      throw std::runtime_error("the demo did not end within " + std::to_string(limitSeconds) + " s (" + logFile + ")");
+std::vector<ClusterModule> demoRobot(const Options& options) {
+  std::vector<ClusterModule> modules = shippedSetModules("sets/demo.yaml");
+  for (ClusterModule& m : modules) {
+    if (m.name != "Simulator") continue;
+    for (std::size_t i = 0; i + 1 < m.command.size(); ++i) {
+      if (m.command[i] == "--world") m.command[i + 1] = options.files.world;
+      if (m.command[i] == "--start" && !options.start.empty()) m.command[i + 1] = options.start;
     }
-    sleepUntilOrInterrupted(std::chrono::steady_clock::now() + std::chrono::milliseconds(500));
   }
-  result.exitStatus = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - begin).count();
-  result.summary = summaryOf(logFile);
-  return result;
+  return modules;
 }
 
-std::vector<std::string> faultTargets(const std::vector<ClusterModule>& modules) {
-  std::vector<std::string> targets;
+// Every module of the set but the simulator.
+std::vector<std::string> victims(const std::vector<ClusterModule>& modules) {
+  std::vector<std::string> names;
   for (const ClusterModule& m : modules)
-    if (m.name != "Simulator") targets.push_back(m.name);
-  return targets;
+    if (m.name != "Simulator") names.push_back(m.name);
+  return names;
+}
+
+std::map<std::string, std::uint32_t> restartCounts(TestCluster& cluster, const std::vector<ClusterModule>& modules) {
+  std::map<std::string, std::uint32_t> counts;
+  for (const ClusterModule& m : modules) counts[m.name] = cluster.describe(m.name).restarts;
+  return counts;
+}
+
+// Whether the summary's "tasks=N/M" says every task was reached.
+bool allReached(const std::string& tasks) {
+  const auto slash = tasks.find('/');
+  return slash != std::string::npos && slash > 0 && tasks.substr(0, slash) == tasks.substr(slash + 1);
+}
+
+const std::string kFaultSettings = "defaults: {backoff_initial_s: 0.05, backoff_max_s: 0.4}";
+
+Reference undisturbedRun(const Options& options) {
+  if (!options.reference.empty()) {
+    std::ifstream in(options.reference);
+    if (!in) throw FileError("cannot read the reference " + options.reference);
+    const json saved = json::parse(in);
+    return {saved.at("summary").get<std::map<std::string, std::string>>(), mapFactsFromJson(saved.at("map"))};
+  }
+  TestCluster cluster(demoRobot(options), kFaultSettings);
+  cluster.start();
+  const DemoOutcome demo =
+      runDemo(cluster, options.files, "undisturbed", "undisturbed | ", std::chrono::seconds(options.limitS));
+  Reference reference{demo.summary, mapFacts(exportedMap(cluster, "undisturbed"))};
+  if (demo.exitCode != 0) std::cout << "undisturbed: the demo ended with exit code " << demo.exitCode << std::endl;
+  if (!options.saveReference.empty())
+    std::ofstream(options.saveReference) << json{{"summary", reference.summary}, {"map", toJson(reference.facts)}}.dump(2)
+                                         << "\n";
+  return reference;
+}
+
+// The seconds the kills are spread over: --span-s, or 85 % of the undisturbed run's time.
+double killSpan(const Options& options, const Reference& reference) {
+  if (options.spanS > 0) return options.spanS;
+  const auto time = reference.summary.find("time_s");
+  if (time == reference.summary.end())
+    throw NotAvailableError("the undisturbed demo printed no time_s; give --span-s");
+  return 0.85 * std::stod(time->second);
+}
+
+std::string joined(const std::vector<std::string>& words) {
+  std::string text;
+  for (const std::string& w : words) text += (text.empty() ? "" : ",") + w;
+  return text;
 }
 
 }  // namespace
@@ -106,50 +129,81 @@ int main(int argc, char** argv) {
   desc.add_options()
       ("help", "this text")
       ("kills", po::value(&options.kills)->default_value(options.kills),
-       "SIGKILLs, dealt in turn to every module of the demo set but the simulator")
-      ("seed", po::value(&options.seed)->default_value(options.seed), "seed for the fault schedule")
-      ("limit-s", po::value(&options.limitSeconds)->default_value(options.limitSeconds), "a demo run longer than this fails");
+       "SIGKILLs, dealt in turn to every module of the set but the simulator")
+      ("seed", po::value(&options.seed)->default_value(options.seed), "seed of the fault schedule")
+      ("world", po::value(&options.files.world)->default_value(options.files.world), "the simulator's world")
+      ("start", po::value(&options.start), "the robot's start x,y,theta in the world (default: the set's)")
+      ("answers", po::value(&options.files.answers)->default_value(options.files.answers), "the demo user's names")
+      ("tasks", po::value(&options.files.tasks)->default_value(options.files.tasks), "the demo's tasks")
+      ("reference", po::value(&options.reference),
+       "the undisturbed run's facts (written by --save-reference) instead of running it")
+      ("save-reference", po::value(&options.saveReference), "write the undisturbed run's facts to this file")
+      ("span-s", po::value(&options.spanS)->default_value(options.spanS),
+       "seconds the kills are spread over (0: 85 % of the undisturbed run's time_s)")
+      ("limit-s", po::value(&options.limitS)->default_value(options.limitS), "each demo run is stopped after this");
   try {
     if (!parseCommandLine(argc, argv, desc)) return 0;
     catchInterruptions();  // a stopped run still shuts its server set down and removes its directory
-    const std::string fastBackoff = "defaults: {backoff_initial_s: 0.05, backoff_max_s: 0.4}";
-    const std::vector<ClusterModule> modules = shippedSetModules("sets/demo.yaml");
+    const Reference reference = undisturbedRun(options);
+    const double span = killSpan(options, reference);
+    std::printf("undisturbed: tasks=%s collisions=%s regions=%zu gateways=%zu names=%s; %d kills over %.0f s\n",
+                reference.summary.count("tasks") ? reference.summary.at("tasks").c_str() : "?",
+                reference.summary.count("collisions") ? reference.summary.at("collisions").c_str() : "?",
+                reference.facts.regions, reference.facts.gateways, joined(reference.facts.regionNames).c_str(),
+                options.kills, span);
+    std::fflush(stdout);
 
-    DemoResult undisturbed;
-    {
-      TestCluster cluster(modules, fastBackoff);
-      cluster.start();
-      const std::string log = cluster.dir() + "/demo.log";
-      const auto begin = std::chrono::steady_clock::now();
-      undisturbed = finishDemo(startDemo(cluster, log), log, begin, options.limitSeconds);
-      std::ifstream in(log);
-      std::cout << "undisturbed run: exit " << undisturbed.exitStatus << ", " << in.rdbuf() << std::flush;
-    }
-
-    TestCluster cluster(modules, fastBackoff);
+    const std::vector<ClusterModule> modules = demoRobot(options);
+    TestCluster cluster(modules, kFaultSettings);
     cluster.start();
-    const std::string log = cluster.dir() + "/demo.log";
-    const auto begin = std::chrono::steady_clock::now();
-    const pid_t demo = startDemo(cluster, log);
-    const FaultRecord faults =
-        injectFaults(cluster, {faultTargets(modules), options.kills, 0, 0.8 * undisturbed.seconds, options.seed});
-    const DemoResult disturbed = finishDemo(demo, log, begin, options.limitSeconds);
-    {
-      std::ifstream in(log);
-      std::cout << "run under faults: exit " << disturbed.exitStatus << ", " << in.rdbuf() << std::flush;
+    const std::map<std::string, std::uint32_t> before = restartCounts(cluster, modules);
+    std::atomic<bool> demoOver{false};
+    FaultRecord faults;
+    std::exception_ptr faultError;
+    std::thread injector([&] {
+      try {
+        faults = injectFaults(cluster, {victims(modules), options.kills, 0, span, options.seed, false,
+                                        [&] { return demoOver.load(); }});
+      } catch (...) {
+        faultError = std::current_exception();
+      }
+    });
+    DemoOutcome demo;
+    try {
+      demo = runDemo(cluster, options.files, "faults", "faults | ", std::chrono::seconds(options.limitS));
+    } catch (...) {
+      demoOver = true;
+      injector.join();
+      throw;
     }
+    demoOver = true;
+    injector.join();
+    if (faultError) std::rethrow_exception(faultError);
+    const std::map<std::string, std::uint32_t> after = restartCounts(cluster, modules);
+    const MapFacts facts = mapFacts(exportedMap(cluster, "faults"));
 
-    const std::string tasks = disturbed.get("tasks");
-    const bool allTasks = tasks.find('/') != std::string::npos &&
-                          tasks.substr(0, tasks.find('/')) == tasks.substr(tasks.find('/') + 1);
-    const bool ok = disturbed.exitStatus == 0 && allTasks && disturbed.get("collisions") == "0" &&
-                    faults.recovered == faults.kills && disturbed.get("regions") == undisturbed.get("regions") &&
-                    disturbed.get("gateways") == undisturbed.get("gateways");
-    std::printf("faulttest navigation: kills=%d recovered=%d naming_restarts=%d tasks=%s collisions=%s regions=%s/%s "
-                "gateways=%s/%s time_s=%.0f/%.0f result=%s\n",
-                faults.kills, faults.recovered, faults.namingRestarts, tasks.c_str(), disturbed.get("collisions").c_str(),
-                undisturbed.get("regions").c_str(), disturbed.get("regions").c_str(), undisturbed.get("gateways").c_str(),
-                disturbed.get("gateways").c_str(), undisturbed.seconds, disturbed.seconds, ok ? "PASS" : "FAIL");
+    int restarts = 0;
+    std::string perModule;
+    for (const auto& [name, count] : after) {
+      restarts += static_cast<int>(count - before.at(name));
+      perModule += " " + name + "=" + std::to_string(count - before.at(name));
+    }
+    std::printf("restarts:%s\n", perModule.c_str());
+    if (!faults.recoverySeconds.empty())
+      std::printf("recovery: longest %.2f s\n",
+                  *std::max_element(faults.recoverySeconds.begin(), faults.recoverySeconds.end()));
+    const bool sameNames = facts.regionNames == reference.facts.regionNames;
+    const bool ok = faults.kills == options.kills && restarts == faults.kills && demo.exitCode == 0 &&
+                    allReached(demo.field("tasks")) && demo.field("collisions") == "0" &&
+                    facts.regions == reference.facts.regions && facts.gateways == reference.facts.gateways && sameNames;
+    if (!sameNames)
+      std::printf("region names: %s vs %s\n", joined(facts.regionNames).c_str(), joined(reference.facts.regionNames).c_str());
+    std::printf("faulttest navigation: kills=%d restarts=%d tasks=%s collisions=%s regions=%zu/%zu gateways=%zu/%zu "
+                "neutralized=%zu/%zu names=%s classes=%s area_m2=%.0f/%.0f exit=%d result=%s\n",
+                faults.kills, restarts, demo.field("tasks").c_str(), demo.field("collisions").c_str(), facts.regions,
+                reference.facts.regions, facts.gateways, reference.facts.gateways, facts.neutralised, reference.facts.neutralised,
+                sameNames ? "same" : "differ", facts.gatewayClasses == reference.facts.gatewayClasses ? "same" : "differ",
+                facts.areaM2, reference.facts.areaM2, demo.exitCode, ok ? "PASS" : "FAIL");
     return ok ? 0 : 1;
   } catch (const po::error& e) {
     std::cerr << "rgnav-faulttest-navigation: " << e.what() << "\n" << desc << std::endl;
