@@ -5,6 +5,7 @@
 #include <filesystem>
 
 #include "tests/eval/crowd/OfficeRgMap.h"
+#include "tests/integration/PlanningSet.h"
 
 namespace rgnav {
 
@@ -25,28 +26,28 @@ std::vector<std::string> simulatorCommand(const CrowdSetOptions& o) {
           "--start", poseArgument(o.start), "--people", std::to_string(o.people), "--seed", std::to_string(o.seed)};
 }
 
+// The set: the simulator with the Low-Level Drive, the kernel and the PathPlanning module as the
+// PathPlanning module's tests run them (planningModules), the Collision Avoidance on the true pose.
+std::vector<ClusterModule> crowdModules(const CrowdSetOptions& o) {
+  std::vector<ClusterModule> modules{
+      {"Simulator", simulatorCommand(o), {"Laser", "Base", "GroundTruth"}},
+      {"LowLevelDrive",
+       {TestCluster::program("rgnav-lowleveldrive"), "--config", TestCluster::moduleConfig("lowleveldrive")},
+       {"LowLevelDrive"},
+       {"Simulator"}}};
+  for (ClusterModule& m : testing::planningModules()) modules.push_back(std::move(m));
+  modules.push_back({"CollisionAvoidance",
+                     {TestCluster::program("rgnav-collisionavoidance"), "--config",
+                      TestCluster::moduleConfig("collisionavoidance"), "--pose-source", "groundtruth", "--trace"},
+                     {"CollisionAvoidance"},
+                     {"Simulator", "LowLevelDrive", "PathPlanning"}});
+  return modules;
+}
+
 }  // namespace
 
 CrowdSet::CrowdSet(const CrowdSetOptions& o, const RgMapState* map)
-    : cluster_(std::make_unique<TestCluster>(std::vector<ClusterModule>{
-          {"Simulator", simulatorCommand(o), {"Laser", "Base", "GroundTruth"}},
-          {"LowLevelDrive",
-           {TestCluster::program("rgnav-lowleveldrive"), "--config", TestCluster::moduleConfig("lowleveldrive")},
-           {"LowLevelDrive"},
-           {"Simulator"}},
-          {"RGMappingKernel",
-           {TestCluster::program("rgnav-rgmappingkernel"), "--config", TestCluster::moduleConfig("rgmappingkernel")},
-           {"RGMappingKernel"}},
-          {"PathPlanning",
-           {TestCluster::program("rgnav-pathplanning"), "--config", TestCluster::moduleConfig("pathplanning")},
-           {"PathPlanning"},
-           {"RGMappingKernel"}},
-          {"CollisionAvoidance",
-           {TestCluster::program("rgnav-collisionavoidance"), "--config",
-            TestCluster::moduleConfig("collisionavoidance"), "--pose-source", "groundtruth", "--trace"},
-           {"CollisionAvoidance"},
-           {"Simulator", "LowLevelDrive", "PathPlanning"}}},
-          o.setYaml)) {
+    : cluster_(std::make_unique<TestCluster>(crowdModules(o), o.setYaml)) {
   if (map) writeKernelCheckpoint(*map, cluster_->dir() + "/run/state/RGMappingKernel");
 }
 
