@@ -68,7 +68,6 @@ SimulationStep InProcessRobot::step() {
 }
 
 void InProcessRobot::refreshMap() {
-  planner_ = RoutePlanner(setup_.planner);
   planner_.setMap(planningMapOf(pipeline_.kernel()));
   mapAt_ = sim_.time();
 }

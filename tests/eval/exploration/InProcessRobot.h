@@ -11,9 +11,8 @@
 // The map frame is SLAM's, fixed at the first scan's odometry pose; the odometry starts at the
 // true start pose, so it is the world frame up to the first scan's odometry noise
 // (mapToWorld, as MappingRun.h places it).
-// Where it differs from the server set: the current region's freespace grows with every scan
-// without a kernel event, which would leave the RoutePlanner's cached region grids (kept while
-// the revision stands) stale; here the planner is made anew at every refresh.
+// The current region's freespace grows with every scan without a kernel event; the RoutePlanner
+// rebuilds the grid of a region whose summary changed, as in the PathPlanning module.
 #pragma once
 
 #include <optional>
@@ -64,7 +63,7 @@ class InProcessRobot {
   // The map frame in the world frame (the first scan's true pose ∘ its corrected pose⁻¹).
   Pose2D mapToWorld() const;
   const RobotSetup& setup() const { return setup_; }
-  // The kernel's map into a new planner now (after naming, say); step() does so every mapPeriodS.
+  // The kernel's map into the planner now (after naming, say); step() does so every mapPeriodS.
   void refreshMap();
 
  private:
