@@ -6,7 +6,7 @@
 #include <iostream>
 
 #include "core/common/AtomicFile.h"
-#include "core/nav/grid/PlanningErrors.h"
+#include "core/nav/exploration/PlannerPathLength.h"
 
 namespace rgnav {
 namespace {
@@ -332,17 +332,7 @@ void HighLevelPlanningService::runExplore(const Task& task) {
   const std::optional<Pose2D> robot = robotPose();
   if (!robot) return progress(task, "exploring: waiting for the robot's pose (" + options_.poseSource + ")");
   const Pose2D start = *robot;
-  const PathLength pathLength = [&](const Eigen::Vector2d& goal) -> std::optional<double> {
-    try {
-      return planner_.plan(start, PlanGoal::at(goal)).lengthM;
-    } catch (const NoPathError&) {
-      return std::nullopt;
-    } catch (const StartBlockedError&) {
-      return std::nullopt;
-    } catch (const GoalBlockedError&) {
-      return std::nullopt;
-    }
-  };
+  const PathLength pathLength = plannerPathLength(planner_, start);
   const ExplorationInput input{planner_.map(), start, summary_.current};
   const ExplorerStep next = explorer_->update(input, outcome, now(), pathLength);
   switch (next.action) {

@@ -11,6 +11,10 @@ PathLength plannerPathLength(const RoutePlanner& planner, const Pose2D& robot) {
       return planner.plan(robot, PlanGoal::at(goal)).lengthM;
     } catch (const NoPathError&) {
       return std::nullopt;
+    } catch (const StartBlockedError&) {  // a region planner's: the robot or the point in no free cell
+      return std::nullopt;
+    } catch (const GoalBlockedError&) {
+      return std::nullopt;
     }
   };
 }

@@ -7,8 +7,8 @@
 
 #include "core/common/Errors.h"
 #include "core/nav/exploration/Explorer.h"
+#include "core/nav/exploration/PlannerPathLength.h"
 #include "core/nav/grid/GridPlanner.h"
-#include "core/nav/grid/PlanningErrors.h"
 #include "core/sim/StartPose.h"
 
 namespace rgnav {
@@ -95,13 +95,7 @@ ExplorationResult runExploration(InProcessRobot& robot, TruthCoverage& coverage,
                     robot.drive().reason().c_str());
     }
     const Pose2D pose = robot.pose();
-    const PathLength pathLength = [&](const Eigen::Vector2d& goal) -> std::optional<double> {
-      try {
-        return robot.planner().plan(pose, PlanGoal::at(goal)).lengthM;
-      } catch (const NoPathError&) {
-        return std::nullopt;
-      }
-    };
+    const PathLength pathLength = plannerPathLength(robot.planner(), pose);
     const ExplorationInput input{robot.planner().map(), pose, robot.kernel().state().current};
     const ExplorerStep next = explorer.update(input, outcomeOf(robot.drive().state()), robot.time() - start, pathLength);
     if (next.action == ExplorerStep::Action::Done) {
